@@ -1,0 +1,56 @@
+#include "debugdraw/primitives.h"
+
+#include <sstream>
+#include <stdexcept>
+
+namespace physdbg::debugdraw {
+
+const std::vector<std::pair<std::string, Layer>>& allLayers() {
+  static const std::vector<std::pair<std::string, Layer>> layers = {
+      {"shapes", Layer::Shapes}, {"wire", Layer::Wire},         {"aabbs", Layer::Aabbs},
+      {"fat", Layer::Fat},       {"tree", Layer::Tree},         {"contacts", Layer::Contacts},
+      {"velocities", Layer::Velocities}, {"sleep", Layer::Sleep}, {"pairs", Layer::Pairs},
+      {"overlay", Layer::Overlay}};
+  return layers;
+}
+
+LayerSet parseLayers(const std::string& list) {
+  LayerSet set;
+  std::stringstream stream(list);
+  std::string name;
+  while (std::getline(stream, name, ',')) {
+    if (name.empty()) continue;
+    bool found = false;
+    for (const auto& [known, layer] : allLayers()) {
+      if (known == name) {
+        set.add(layer);
+        found = true;
+      }
+    }
+    if (!found) {
+      std::string valid;
+      for (const auto& entry : allLayers()) valid += (valid.empty() ? "" : ", ") + entry.first;
+      throw std::invalid_argument("unknown layer '" + name + "' (valid: " + valid + ")");
+    }
+  }
+  return set;
+}
+
+std::string layerNames(LayerSet set) {
+  std::string names;
+  for (const auto& [name, layer] : allLayers()) {
+    if (set.has(layer)) names += (names.empty() ? "" : ",") + name;
+  }
+  return names;
+}
+
+void Frame::clear() { *this = Frame{}; }
+
+bool Frame::empty() const { return primitiveCount() == 0; }
+
+std::size_t Frame::primitiveCount() const {
+  return boxes.size() + spheres.size() + capsules.size() + meshes.size() + wireBoxes.size() + lines.size() +
+         points.size() + arrows.size() + texts.size();
+}
+
+}  // namespace physdbg::debugdraw

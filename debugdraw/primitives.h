@@ -1,0 +1,150 @@
+#pragma once
+// Debug-draw primitives: the only thing the engine and the renderer share.
+// Positions are double so that a scene 1e7 m from the origin still draws
+// correctly: the renderer subtracts its camera origin before going to float.
+// A Frame is plain data, so it can be recorded, replayed, or compared.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace physdbg::debugdraw {
+
+using Vec3 = Eigen::Vector3d;
+using Quat = Eigen::Quaterniond;
+
+struct Color {
+  float r = 1, g = 1, b = 1, a = 1;
+};
+
+// Colours with a meaning, used by every producer so pictures read the same.
+namespace colors {
+inline constexpr Color treeNode{0.15f, 0.35f, 1.0f, 1.0f};     // tree AABBs: blue
+inline constexpr Color fatBox{0.1f, 0.85f, 0.2f, 1.0f};        // enlarged boxes: green
+inline constexpr Color colliding{1.0f, 0.1f, 0.1f, 1.0f};      // collider box in contact: red
+inline constexpr Color tightBox{0.85f, 0.85f, 0.85f, 1.0f};    // collider box, no contact
+inline constexpr Color contactPoint{1.0f, 0.9f, 0.1f, 1.0f};   // contact points: yellow
+inline constexpr Color contactNormal{1.0f, 0.5f, 0.0f, 1.0f};  // contact normals: orange
+inline constexpr Color staticBody{0.55f, 0.55f, 0.58f, 1.0f};
+}  // namespace colors
+
+// Bit flags naming what a frame should contain. A producer computes nothing
+// for a layer that is not requested.
+enum class Layer : std::uint32_t {
+  Shapes = 1u << 0,
+  Wire = 1u << 1,
+  Aabbs = 1u << 2,
+  Fat = 1u << 3,
+  Tree = 1u << 4,
+  Contacts = 1u << 5,
+  Velocities = 1u << 6,
+  Sleep = 1u << 7,
+  Pairs = 1u << 8,
+  Overlay = 1u << 9,
+};
+
+struct LayerSet {
+  std::uint32_t bits = 0;
+  bool has(Layer layer) const { return (bits & static_cast<std::uint32_t>(layer)) != 0; }
+  void add(Layer layer) { bits |= static_cast<std::uint32_t>(layer); }
+  bool empty() const { return bits == 0; }
+};
+
+// Parses "shapes,aabbs,..." into a set. Throws std::invalid_argument naming the
+// unknown layer. The empty string gives the empty set.
+LayerSet parseLayers(const std::string& list);
+std::string layerNames(LayerSet set);
+const std::vector<std::pair<std::string, Layer>>& allLayers();
+
+struct SolidBox {
+  Vec3 center;
+  Quat orientation = Quat::Identity();
+  Vec3 halfExtents;
+  Color color;
+};
+
+struct SolidSphere {
+  Vec3 center;
+  Quat orientation = Quat::Identity();
+  double radius = 1;
+  Color color;
+};
+
+// Capsule along its local y axis: a cylinder of half height `halfHeight` with
+// hemispherical caps of `radius`.
+struct SolidCapsule {
+  Vec3 center;
+  Quat orientation = Quat::Identity();
+  double radius = 0.5;
+  double halfHeight = 0.5;
+  Color color;
+};
+
+// Triangle mesh in local coordinates, shared between frames. `id` is stable
+// for the life of the mesh so a renderer may cache uploads by it.
+struct TriangleMesh {
+  std::uint64_t id = 0;
+  std::vector<Eigen::Vector3f> vertices;
+  std::vector<std::uint32_t> indices;  // three per triangle, counter-clockwise seen from outside
+};
+
+struct SolidMesh {
+  Vec3 center;
+  Quat orientation = Quat::Identity();
+  std::shared_ptr<const TriangleMesh> mesh;
+  Color color;
+};
+
+// Twelve edges of an oriented box (identity orientation for AABBs).
+struct WireBox {
+  Vec3 center;
+  Quat orientation = Quat::Identity();
+  Vec3 halfExtents;
+  Color color;
+};
+
+struct Line {
+  Vec3 from, to;
+  Color color;
+};
+
+struct Point {
+  Vec3 position;
+  float sizePixels = 6;
+  Color color;
+};
+
+// A line with a head at `to`.
+struct Arrow {
+  Vec3 from, to;
+  Color color;
+};
+
+// Screen-space text, pixels from the top-left corner.
+struct Text {
+  float x = 0, y = 0;
+  float scale = 2;
+  std::string text;
+  Color color;
+};
+
+struct Frame {
+  std::vector<SolidBox> boxes;
+  std::vector<SolidSphere> spheres;
+  std::vector<SolidCapsule> capsules;
+  std::vector<SolidMesh> meshes;
+  std::vector<WireBox> wireBoxes;
+  std::vector<Line> lines;
+  std::vector<Point> points;
+  std::vector<Arrow> arrows;
+  std::vector<Text> texts;
+
+  void clear();
+  bool empty() const;
+  std::size_t primitiveCount() const;
+};
+
+}  // namespace physdbg::debugdraw

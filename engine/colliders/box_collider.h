@@ -1,0 +1,22 @@
+#pragma once
+#include "engine/colliders/collider.h"
+
+namespace physdbg {
+
+class BoxCollider final : public Collider {
+ public:
+  explicit BoxCollider(const Vec3& halfExtents) : halfExtents_(halfExtents) {}
+
+  const Vec3& halfExtents() const { return halfExtents_; }
+
+  ColliderKind kind() const override { return ColliderKind::Box; }
+  Vec3 localSupport(const Vec3& direction) const override;
+  Aabb localBounds() const override;
+  double volume() const override;
+  Mat3 unitInertia() const override;
+
+ private:
+  Vec3 halfExtents_;
+};
+
+}  // namespace physdbg
