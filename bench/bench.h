@@ -1,0 +1,32 @@
+#pragma once
+// Benchmarks run by `physdbg bench [NAME]`. Each one prints JSON objects with
+// at least name, n, ours_ms, peer, peer_ms and ratio (ours / peer): absolute
+// times on shared machines are noise, the ratio measured in one run is not.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+namespace physdbg::bench {
+
+struct BenchOptions {
+  bool quick = false;  // smaller sizes, for smoke tests
+};
+
+using BenchSink = std::function<void(const nlohmann::json& result)>;
+
+struct Benchmark {
+  std::string name;
+  std::string description;
+  std::function<void(const BenchOptions&, const BenchSink&)> run;
+};
+
+// Every benchmark of the project, in a fixed order.
+std::vector<Benchmark> allBenchmarks();
+
+// Builds the common fields; `peer` empty and `peerMs` <= 0 mean no peer ran.
+nlohmann::json benchRecord(const std::string& name, long long n, double oursMs, const std::string& peer,
+                           double peerMs);
+
+}  // namespace physdbg::bench
