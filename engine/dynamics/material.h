@@ -1,0 +1,12 @@
+#pragma once
+// Surface properties of a body. How two materials combine is decided where
+// they meet (the contact solver), and documented there.
+namespace physdbg {
+
+struct Material {
+  double restitution = 0.0;      // 0 = no bounce, 1 = elastic
+  double staticFriction = 0.6;   // Coulomb coefficient that holds a body at rest
+  double dynamicFriction = 0.5;  // Coulomb coefficient while sliding
+};
+
+}  // namespace physdbg

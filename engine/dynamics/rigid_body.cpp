@@ -1,0 +1,197 @@
+#include "engine/dynamics/rigid_body.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace physdbg {
+namespace {
+
+Mat3 skew(const Vec3& v) {
+  Mat3 m;
+  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return m;
+}
+
+// Rotation by the vector `rotation` (axis times angle), exactly: keeps a spin
+// about a fixed axis exact and the quaternion unit-length to round-off.
+Quat rotationFromVector(const Vec3& rotation) {
+  const double angle = rotation.norm();
+  if (angle < 1e-300) return Quat::Identity();
+  return Quat(Eigen::AngleAxisd(angle, rotation / angle));
+}
+
+}  // namespace
+
+RigidBody::RigidBody(const BodyDefinition& definition)
+    : collider_(definition.collider),
+      position_(definition.position),
+      linearVelocity_(definition.linearVelocity),
+      angularVelocity_(definition.angularVelocity),
+      orientation_(definition.orientation),
+      isStatic_(definition.isStatic),
+      useGravity_(definition.useGravity),
+      mass_(definition.mass),
+      linearDrag_(definition.linearDrag),
+      angularDrag_(definition.angularDrag),
+      material_(definition.material),
+      lockTranslation_(definition.lockTranslation),
+      lockRotation_(definition.lockRotation) {
+  if (!collider_) throw std::invalid_argument("body has no collider");
+  if (!isFinite(position_) || !isFinite(linearVelocity_) || !isFinite(angularVelocity_) || !isFinite(orientation_))
+    throw std::invalid_argument("body state is not finite");
+  if (orientation_.norm() < 1e-12) throw std::invalid_argument("body orientation is a zero quaternion");
+  orientation_.normalize();
+  if (linearDrag_ < 0 || angularDrag_ < 0) throw std::invalid_argument("drag must not be negative");
+  if (isStatic_) {
+    mass_ = 0.0;
+    inverseMass_ = 0.0;
+    localInertia_.setZero();
+    localInverseInertia_.setZero();
+    linearVelocity_.setZero();
+    angularVelocity_.setZero();
+    return;
+  }
+  if (!(mass_ > 0.0) || !std::isfinite(mass_)) throw std::invalid_argument("mass must be positive and finite");
+  inverseMass_ = 1.0 / mass_;
+  localInertia_ = collider_->unitInertia() * mass_;
+  localInverseInertia_ = localInertia_.inverse();
+  if (!localInverseInertia_.allFinite()) throw std::invalid_argument("collider has a singular inertia tensor");
+  applyLocks();
+}
+
+Mat3 RigidBody::worldInverseInertia() const {
+  const Mat3 rotation = orientation_.toRotationMatrix();
+  return rotation * localInverseInertia_ * rotation.transpose();
+}
+
+bool RigidBody::hasLocks() const {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (lockTranslation_[axis] || lockRotation_[axis]) return true;
+  }
+  return false;
+}
+
+void RigidBody::addForce(const Vec3& force, ForceMode mode) {
+  if (isStatic_) return;
+  switch (mode) {
+    case ForceMode::Force: forceAccumulator_ += force; break;
+    case ForceMode::Acceleration: accelerationAccumulator_ += force; break;
+    case ForceMode::Impulse: velocityChange_ += force * inverseMass_; break;
+    case ForceMode::VelocityChange: velocityChange_ += force; break;
+  }
+}
+
+void RigidBody::addTorque(const Vec3& torque, ForceMode mode) {
+  if (isStatic_) return;
+  switch (mode) {
+    case ForceMode::Force: torqueAccumulator_ += torque; break;
+    case ForceMode::Acceleration: angularAccelerationAccumulator_ += torque; break;
+    case ForceMode::Impulse: angularMomentumChange_ += torque; break;
+    case ForceMode::VelocityChange: angularVelocityChange_ += torque; break;
+  }
+}
+
+void RigidBody::addForceAtPoint(const Vec3& force, const Vec3& point, ForceMode mode) {
+  addForce(force, mode);
+  addTorque((point - position_).cross(force), mode);
+}
+
+void RigidBody::applyImpulseAtPoint(const Vec3& impulse, const Vec3& point) {
+  if (isStatic_) return;
+  linearVelocity_ += impulse * inverseMass_;
+  angularVelocity_ += worldInverseInertia() * (point - position_).cross(impulse);
+  applyLocks();
+}
+
+void RigidBody::integrateVelocity(double dt, const Vec3& gravity) {
+  if (isStatic_) return;
+  Vec3 acceleration = forceAccumulator_ * inverseMass_ + accelerationAccumulator_;
+  if (useGravity_) acceleration += gravity;
+  linearVelocity_ += acceleration * dt + velocityChange_;
+  linearVelocity_ /= 1.0 + linearDrag_ * dt;
+
+  integrateAngularVelocity(dt);
+  const Mat3 inverseInertia = worldInverseInertia();
+  angularVelocity_ += inverseInertia * (torqueAccumulator_ * dt + angularMomentumChange_) +
+                      angularAccelerationAccumulator_ * dt + angularVelocityChange_;
+  angularVelocity_ /= 1.0 + angularDrag_ * dt;
+
+  applyLocks();
+  forceAccumulator_.setZero();
+  accelerationAccumulator_.setZero();
+  velocityChange_.setZero();
+  torqueAccumulator_.setZero();
+  angularAccelerationAccumulator_.setZero();
+  angularMomentumChange_.setZero();
+  angularVelocityChange_.setZero();
+}
+
+// Torque-free part of Euler's equations, dPi/dt = Pi x w with Pi = I w in the
+// body frame, by the implicit midpoint rule. Explicit Euler gains energy on a
+// tumbling box (MuJoCo measured +9%); the midpoint rule keeps both invariants,
+// |Pi| and the kinetic energy, to the Newton tolerance. Its solution satisfies
+// Pi1 = C Pi0 with C the Cayley rotation of -dt*wm, so turning the body by C's
+// inverse (angle 2 atan(dt |wm| / 2) about wm) keeps the world angular momentum
+// R Pi exactly too. A spin about a principal axis (w x Iw = 0) is unchanged.
+void RigidBody::integrateAngularVelocity(double dt) {
+  const Vec3 start = orientation_.conjugate() * angularVelocity_;
+  const Mat3& inertia = localInertia_;
+  if (start.cross(inertia * start).squaredNorm() == 0.0) {
+    orientationSpin_ = angularVelocity_;
+    spinAfterGyroscopicStep_ = angularVelocity_;
+    return;
+  }
+  Vec3 end = start;
+  for (int iteration = 0; iteration < 10; ++iteration) {
+    const Vec3 middle = 0.5 * (start + end);
+    const Vec3 residual = inertia * (end - start) + dt * middle.cross(inertia * middle);
+    const Mat3 jacobian = inertia + 0.5 * dt * (skew(middle) * inertia - skew(inertia * middle));
+    const Vec3 step = jacobian.partialPivLu().solve(residual);
+    end -= step;
+    if (step.norm() <= 1e-15 * end.norm()) break;
+  }
+  const Vec3 middle = orientation_ * (0.5 * (start + end));
+  const double speed = middle.norm();
+  orientationSpin_ = middle * (2.0 * std::atan(0.5 * dt * speed) / (dt * speed));
+  angularVelocity_ = orientation_ * end;
+  spinAfterGyroscopicStep_ = angularVelocity_;
+}
+
+// The orientation turns by the gyroscopic step's rotation plus whatever the
+// torques, impulses and contacts added to the angular velocity since then.
+void RigidBody::integratePosition(double dt) {
+  if (isStatic_) return;
+  position_ += linearVelocity_ * dt;
+  const Vec3 spin = orientationSpin_ + (angularVelocity_ - spinAfterGyroscopicStep_);
+  const Quat turn = rotationFromVector(spin * dt);
+  orientation_ = (turn * orientation_).normalized();
+  // The midpoint rule advanced the body-frame spin; it turns with the body.
+  // (After a spin about a principal axis, `turn` is about w and leaves it be.)
+  if (orientationSpin_ != spinAfterGyroscopicStep_) angularVelocity_ = turn * angularVelocity_;
+  orientationSpin_.setZero();
+  spinAfterGyroscopicStep_.setZero();
+}
+
+void RigidBody::applyLocks() {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (lockTranslation_[axis]) linearVelocity_[axis] = 0.0;
+    if (lockRotation_[axis]) angularVelocity_[axis] = 0.0;
+  }
+}
+
+double RigidBody::kineticEnergy() const {
+  if (isStatic_) return 0.0;
+  const Vec3 bodySpin = orientation_.conjugate() * angularVelocity_;
+  return 0.5 * mass_ * linearVelocity_.squaredNorm() + 0.5 * bodySpin.dot(localInertia_ * bodySpin);
+}
+
+Vec3 RigidBody::angularMomentum() const {
+  if (isStatic_) return Vec3::Zero();
+  return orientation_ * (localInertia_ * (orientation_.conjugate() * angularVelocity_));
+}
+
+bool RigidBody::hasFiniteState() const {
+  return isFinite(position_) && isFinite(orientation_) && isFinite(linearVelocity_) && isFinite(angularVelocity_);
+}
+
+}  // namespace physdbg

@@ -1,0 +1,120 @@
+#pragma once
+// A rigid body as the design's CustomRigidbody: forces and impulses are
+// accumulated by addForce/addTorque with a ForceMode, then consumed by
+// semi-implicit Euler (velocity first, then position with the new velocity).
+#include <array>
+#include <memory>
+
+#include "engine/colliders/collider.h"
+#include "engine/dynamics/material.h"
+#include "engine/math.h"
+
+namespace physdbg {
+
+// What a pushed quantity means:
+//   Force          N (or N m), scaled by dt and by the inverse mass (inertia)
+//   Acceleration   m/s^2,      scaled by dt, mass ignored
+//   Impulse        N s,        scaled by the inverse mass, applied once
+//   VelocityChange m/s,        applied once, mass ignored
+enum class ForceMode { Force, Acceleration, Impulse, VelocityChange };
+
+struct BodyDefinition {
+  std::shared_ptr<const Collider> collider;
+  Vec3 position = Vec3::Zero();
+  Quat orientation = Quat::Identity();
+  Vec3 linearVelocity = Vec3::Zero();
+  Vec3 angularVelocity = Vec3::Zero();  // world frame, rad/s
+  double mass = 1.0;
+  bool isStatic = false;
+  bool useGravity = true;
+  double linearDrag = 0.0;   // 1/s: v decays as v / (1 + drag * dt) per step
+  double angularDrag = 0.0;  // 1/s: same rule for the angular velocity
+  Material material;
+  std::array<bool, 3> lockTranslation{false, false, false};  // world axes
+  std::array<bool, 3> lockRotation{false, false, false};     // world axes
+};
+
+class RigidBody {
+ public:
+  // Throws std::invalid_argument for a missing collider, a non-positive mass
+  // on a dynamic body, or non-finite state.
+  explicit RigidBody(const BodyDefinition& definition);
+
+  const Collider& collider() const { return *collider_; }
+  const std::shared_ptr<const Collider>& colliderPointer() const { return collider_; }
+
+  const Vec3& position() const { return position_; }
+  const Quat& orientation() const { return orientation_; }
+  const Vec3& linearVelocity() const { return linearVelocity_; }
+  const Vec3& angularVelocity() const { return angularVelocity_; }
+  Transform transform() const { return {position_, orientation_}; }
+
+  void setPosition(const Vec3& position) { position_ = position; }
+  void setOrientation(const Quat& orientation) { orientation_ = orientation.normalized(); }
+  void setLinearVelocity(const Vec3& velocity) { linearVelocity_ = velocity; }
+  void setAngularVelocity(const Vec3& velocity) { angularVelocity_ = velocity; }
+
+  bool isStatic() const { return isStatic_; }
+  bool usesGravity() const { return useGravity_; }
+  double mass() const { return mass_; }
+  double inverseMass() const { return inverseMass_; }
+  const Mat3& localInertia() const { return localInertia_; }
+  Mat3 worldInverseInertia() const;
+  const Material& material() const { return material_; }
+  double linearDrag() const { return linearDrag_; }
+  double angularDrag() const { return angularDrag_; }
+  const std::array<bool, 3>& lockTranslation() const { return lockTranslation_; }
+  const std::array<bool, 3>& lockRotation() const { return lockRotation_; }
+  bool hasLocks() const;
+
+  void addForce(const Vec3& force, ForceMode mode = ForceMode::Force);
+  void addTorque(const Vec3& torque, ForceMode mode = ForceMode::Force);
+  // A force through a world point also makes a torque about the centre of mass.
+  void addForceAtPoint(const Vec3& force, const Vec3& point, ForceMode mode = ForceMode::Force);
+
+  // Applies an impulse at a world point right away (collision response).
+  void applyImpulseAtPoint(const Vec3& impulse, const Vec3& point);
+
+  // Semi-implicit Euler, first half: accumulated forces and impulses (and
+  // gravity, when used) change the velocities, then drag, then axis locks.
+  // Clears the accumulators.
+  void integrateVelocity(double dt, const Vec3& gravity);
+  // Second half: position and orientation move with the new velocities.
+  void integratePosition(double dt);
+
+  // Zeroes velocities along locked axes. Locks act on velocities, so a locked
+  // coordinate keeps its exact initial value.
+  void applyLocks();
+
+  double kineticEnergy() const;
+  Vec3 angularMomentum() const;  // world frame, about the centre of mass
+  bool hasFiniteState() const;
+
+ private:
+  void integrateAngularVelocity(double dt);
+
+  std::shared_ptr<const Collider> collider_;
+  Vec3 position_, linearVelocity_, angularVelocity_;
+  Quat orientation_;
+  bool isStatic_;
+  bool useGravity_;
+  double mass_, inverseMass_;
+  Mat3 localInertia_, localInverseInertia_;
+  double linearDrag_, angularDrag_;
+  Material material_;
+  std::array<bool, 3> lockTranslation_, lockRotation_;
+
+  Vec3 forceAccumulator_ = Vec3::Zero();         // N
+  Vec3 accelerationAccumulator_ = Vec3::Zero();  // m/s^2
+  Vec3 velocityChange_ = Vec3::Zero();           // m/s, impulses already divided by mass
+  Vec3 torqueAccumulator_ = Vec3::Zero();        // N m
+  Vec3 angularAccelerationAccumulator_ = Vec3::Zero();
+  Vec3 angularMomentumChange_ = Vec3::Zero();    // N m s
+  Vec3 angularVelocityChange_ = Vec3::Zero();
+
+  // Set by the gyroscopic step, consumed by integratePosition (see there).
+  Vec3 orientationSpin_ = Vec3::Zero();
+  Vec3 spinAfterGyroscopicStep_ = Vec3::Zero();
+};
+
+}  // namespace physdbg

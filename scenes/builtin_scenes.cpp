@@ -1,0 +1,76 @@
+// Built-in scenes, generated in code so their sizes can be parameters.
+#include <cmath>
+#include <filesystem>
+
+#include "engine/colliders/box_collider.h"
+#include "engine/colliders/sphere_collider.h"
+#include "scenes/scene.h"
+
+namespace physdbg {
+namespace {
+
+BodyDefinition staticBox(const Vec3& center, const Vec3& halfExtents) {
+  BodyDefinition body;
+  body.collider = std::make_shared<BoxCollider>(halfExtents);
+  body.position = center;
+  body.isStatic = true;
+  return body;
+}
+
+BodyDefinition dynamicBody(std::shared_ptr<const Collider> collider, const Vec3& position) {
+  BodyDefinition body;
+  body.collider = std::move(collider);
+  body.position = position;
+  return body;
+}
+
+// A few boxes and spheres tumbling onto a ground slab: the first thing a new
+// user renders, so every common shape and a static body appear.
+SceneDescription defaultScene() {
+  SceneDescription scene;
+  scene.name = "default";
+  scene.description = "boxes and spheres tumbling onto a ground slab";
+  scene.steps = 180;
+  scene.bodies.push_back(staticBox(Vec3(0, -0.5, 0), Vec3(6, 0.5, 6)));
+  const std::shared_ptr<const Collider> box = std::make_shared<BoxCollider>(Vec3(0.5, 0.5, 0.5));
+  const std::shared_ptr<const Collider> plank = std::make_shared<BoxCollider>(Vec3(0.9, 0.2, 0.4));
+  const std::shared_ptr<const Collider> sphere = std::make_shared<SphereCollider>(0.5);
+  int index = 0;
+  for (int layer = 0; layer < 2; ++layer) {
+    for (int row = 0; row < 3; ++row) {
+      for (int column = 0; column < 3; ++column, ++index) {
+        const Vec3 position(-2.2 + 2.2 * column, 2.0 + 2.5 * layer + 0.4 * row, -2.2 + 2.2 * row);
+        const std::shared_ptr<const Collider> shape = index % 3 == 0 ? sphere : (index % 3 == 1 ? box : plank);
+        BodyDefinition body = dynamicBody(shape, position);
+        body.orientation = Quat(Eigen::AngleAxisd(0.3 * index, Vec3(1, 2, 0.5).normalized()));
+        body.angularVelocity = Vec3(0.5 * std::sin(index), 1.0, 0.4 * std::cos(index));
+        body.material.restitution = 0.3;
+        scene.bodies.push_back(body);
+      }
+    }
+  }
+  return scene;
+}
+
+}  // namespace
+
+const std::vector<BuiltinScene>& builtinScenes() {
+  static const std::vector<BuiltinScene> scenes = {
+      {"default", "boxes and spheres tumbling onto a ground slab", defaultScene},
+  };
+  return scenes;
+}
+
+SceneDescription resolveScene(const std::string& nameOrPath) {
+  for (const BuiltinScene& scene : builtinScenes()) {
+    if (scene.name == nameOrPath) return scene.make();
+  }
+  if (!std::filesystem::exists(nameOrPath)) {
+    std::string names;
+    for (const BuiltinScene& scene : builtinScenes()) names += (names.empty() ? "" : ", ") + scene.name;
+    throw SceneError(nameOrPath + ": no such built-in scene or scene file (built-in: " + names + ")");
+  }
+  return loadSceneFile(nameOrPath);
+}
+
+}  // namespace physdbg

@@ -1,0 +1,56 @@
+#pragma once
+// A scene: world settings, bodies and presentation hints, independent of where
+// it came from (a JSON file or a built-in generator). The format is documented
+// in scenes/README.md.
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "engine/world.h"
+
+namespace physdbg {
+
+// Bad scene input. The message names the file, the key path and the problem.
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct SceneCamera {
+  std::optional<Vec3> eye;
+  std::optional<Vec3> target;
+  double fovYDegrees = 45.0;
+  bool orthographic = false;
+};
+
+struct SceneDescription {
+  std::string name;
+  std::string description;
+  WorldSettings world;
+  int steps = 240;
+  std::vector<BodyDefinition> bodies;
+  std::optional<SceneCamera> camera;
+  std::optional<std::string> layers;  // the scene's default debug layers
+};
+
+// `sourceName` is used in error messages (usually the file path).
+SceneDescription parseScene(const std::string& jsonText, const std::string& sourceName);
+SceneDescription loadSceneFile(const std::string& path);
+
+struct BuiltinScene {
+  std::string name;
+  std::string description;
+  std::function<SceneDescription()> make;
+};
+
+const std::vector<BuiltinScene>& builtinScenes();
+
+// A built-in scene name, or else a path to a scene file. Throws SceneError.
+SceneDescription resolveScene(const std::string& nameOrPath);
+
+// Throws SceneError naming the body when the engine rejects a definition.
+World buildWorld(const SceneDescription& scene);
+
+}  // namespace physdbg
