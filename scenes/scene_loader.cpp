@@ -227,7 +227,7 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
   json root;
   try {
     root = json::parse(jsonText);
-  } catch (const json::parse_error& error) {
+  } catch (const json::exception& error) {  // parse errors and number overflow (1e999)
     reader.fail("", std::string("malformed JSON: ") + error.what());
   }
   reader.requireObject(root, "");

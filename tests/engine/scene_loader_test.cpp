@@ -1,0 +1,168 @@
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <filesystem>
+#include <string>
+
+#include "engine/colliders/box_collider.h"
+#include "engine/colliders/sphere_collider.h"
+#include "scenes/scene.h"
+
+namespace physdbg {
+namespace {
+
+std::string errorOf(const std::string& text) {
+  try {
+    parseScene(text, "bad.json");
+  } catch (const SceneError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(SceneLoader, AMinimalSceneGetsTheDocumentedDefaults) {
+  const SceneDescription scene = parseScene(R"({"bodies": [{"shape": {"sphere": {"radius": 0.5}}}]})", "min.json");
+  EXPECT_EQ(scene.name, "min");
+  EXPECT_EQ(scene.world.gravity, Vec3(0, -9.81, 0));
+  EXPECT_DOUBLE_EQ(scene.world.dt, 1.0 / 60.0);
+  ASSERT_EQ(scene.bodies.size(), 1u);
+  const BodyDefinition& body = scene.bodies[0];
+  EXPECT_EQ(body.mass, 1.0);
+  EXPECT_FALSE(body.isStatic);
+  EXPECT_TRUE(body.useGravity);
+  EXPECT_TRUE(body.orientation.isApprox(Quat::Identity()));
+  EXPECT_EQ(body.collider->kind(), ColliderKind::Sphere);
+}
+
+TEST(SceneLoader, ReadsEveryBodyKey) {
+  const SceneDescription scene = parseScene(R"({
+    "gravity": [0, 0, -1], "dt": 0.01, "steps": 50, "layers": "shapes,aabbs",
+    "camera": {"eye": [10, 5, 10], "target": [0, 0, 0], "fov": 40},
+    "bodies": [{"shape": {"box": {"half_extents": [1, 2, 3]}}, "position": [1, 2, 3],
+                "orientation": [0, 0, 1, 0], "velocity": [1, 0, 0], "angular_velocity": [0, 1, 0],
+                "mass": 2.5, "static": false, "restitution": 0.4, "static_friction": 0.7,
+                "dynamic_friction": 0.3, "drag": 0.1, "angular_drag": 0.2, "use_gravity": false,
+                "lock_translation": [false, true, false], "lock_rotation": [true, false, false]}]})",
+                                            "all.json");
+  EXPECT_EQ(scene.steps, 50);
+  EXPECT_EQ(scene.world.gravity, Vec3(0, 0, -1));
+  ASSERT_TRUE(scene.camera.has_value());
+  EXPECT_EQ(*scene.camera->eye, Vec3(10, 5, 10));
+  const BodyDefinition& body = scene.bodies.at(0);
+  EXPECT_EQ(static_cast<const BoxCollider&>(*body.collider).halfExtents(), Vec3(1, 2, 3));
+  EXPECT_DOUBLE_EQ(body.orientation.x(), 0.0);
+  EXPECT_DOUBLE_EQ(body.orientation.y(), 1.0);
+  EXPECT_EQ(body.mass, 2.5);
+  EXPECT_EQ(body.material.restitution, 0.4);
+  EXPECT_EQ(body.material.staticFriction, 0.7);
+  EXPECT_EQ(body.material.dynamicFriction, 0.3);
+  EXPECT_EQ(body.linearDrag, 0.1);
+  EXPECT_EQ(body.angularDrag, 0.2);
+  EXPECT_FALSE(body.useGravity);
+  EXPECT_TRUE(body.lockTranslation[1]);
+  EXPECT_TRUE(body.lockRotation[0]);
+}
+
+TEST(SceneLoader, RepeatExpandsXThenZThenY) {
+  const SceneDescription scene = parseScene(
+      R"({"bodies": [{"shape": {"sphere": {"radius": 0.5}}, "position": [0, 1, 0],
+                      "repeat": {"count": [2, 3, 2], "spacing": [1, 2, 3]}}]})",
+      "grid.json");
+  ASSERT_EQ(scene.bodies.size(), 12u);
+  EXPECT_EQ(scene.bodies[1].position, Vec3(1, 1, 0));
+  EXPECT_EQ(scene.bodies[2].position, Vec3(0, 1, 3));
+  EXPECT_EQ(scene.bodies[4].position, Vec3(0, 3, 0));
+}
+
+struct BadScene {
+  const char* what;
+  const char* json;
+  const char* mustMention;
+};
+
+class SceneLoaderRejects : public ::testing::TestWithParam<BadScene> {};
+
+TEST_P(SceneLoaderRejects, WithAMessageNamingFileAndKey) {
+  const std::string message = errorOf(GetParam().json);
+  ASSERT_FALSE(message.empty()) << "accepted: " << GetParam().json;
+  EXPECT_NE(message.find("bad.json"), std::string::npos) << message;
+  EXPECT_NE(message.find(GetParam().mustMention), std::string::npos) << message;
+}
+
+const char* const sphere = R"("shape": {"sphere": {"radius": 1}})";
+
+INSTANTIATE_TEST_SUITE_P(
+    BadInput, SceneLoaderRejects,
+    ::testing::Values(
+        BadScene{"malformed", R"({"bodies": [)", "malformed JSON"},
+        BadScene{"not an object", R"([1, 2])", "must be an object"},
+        BadScene{"no bodies", R"({"dt": 0.1})", "missing key bodies"},
+        BadScene{"unknown top key", R"({"bodies": [], "gravty": [0, 0, 0]})", "gravty"},
+        BadScene{"unknown body key", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "colour": 1}]})",
+                 "bodies[0].colour"},
+        BadScene{"unknown shape", R"({"bodies": [{"shape": {"cone": {}}}]})", "cone"},
+        BadScene{"two shapes", R"({"bodies": [{"shape": {"sphere": {"radius": 1}, "box": {}}}]})",
+                 "bodies[0].shape"},
+        BadScene{"missing shape", R"({"bodies": [{"position": [0, 0, 0]}]})", "missing key shape"},
+        BadScene{"wrong type", R"({"bodies": [{"shape": {"sphere": {"radius": "big"}}}]})",
+                 "bodies[0].shape.sphere.radius"},
+        BadScene{"negative radius", R"({"bodies": [{"shape": {"sphere": {"radius": -1}}}]})", "must be positive"},
+        BadScene{"zero half extent", R"({"bodies": [{"shape": {"box": {"half_extents": [1, 0, 1]}}}]})",
+                 "half_extents[1]"},
+        BadScene{"short vector", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "position": [0, 1]}]})",
+                 "must have 3 elements"},
+        BadScene{"negative mass", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "mass": -2}]})",
+                 "bodies[0].mass"},
+        BadScene{"zero dt", R"({"dt": 0, "bodies": []})", "dt"},
+        BadScene{"negative dt", R"({"dt": -0.01, "bodies": []})", "dt"},
+        BadScene{"infinite number", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "position": [1e999, 0, 0]}]})",
+                 "overflow"},
+        BadScene{"bool as number", R"({"gravity": [0, true, 0], "bodies": []})", "gravity[1]"},
+        BadScene{"number as bool", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "static": 1}]})", "static"},
+        BadScene{"zero quaternion", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "orientation": [0, 0, 0, 0]}]})",
+                 "orientation"},
+        BadScene{"restitution above one",
+                 R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "restitution": 1.5}]})", "restitution"},
+        BadScene{"bad lock", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "lock_rotation": [true]}]})",
+                 "lock_rotation"},
+        BadScene{"unknown layer", R"({"layers": "shapes,glitter", "bodies": []})", "glitter"},
+        BadScene{"fractional steps", R"({"steps": 2.5, "bodies": []})", "steps"},
+        BadScene{"bad camera", R"({"camera": {"eye": [1, 1, 1], "target": [1, 1, 1]}, "bodies": []})", "camera"}),
+    [](const ::testing::TestParamInfo<BadScene>& info) {
+      std::string name = info.param.what;
+      for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+      return name;
+    });
+
+TEST(SceneLoader, EveryShippedSceneFileLoads) {
+  for (const auto& entry : std::filesystem::directory_iterator(PHYSDBG_SOURCE_DIR "/scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    SCOPED_TRACE(entry.path().string());
+    EXPECT_NO_THROW(buildWorld(loadSceneFile(entry.path().string())));
+  }
+}
+
+TEST(SceneLoader, MissingFileIsAnErrorNamingIt) {
+  EXPECT_THROW(resolveScene("/nonexistent/scene.json"), SceneError);
+  try {
+    resolveScene("/nonexistent/scene.json");
+  } catch (const SceneError& error) {
+    EXPECT_NE(std::string(error.what()).find("/nonexistent/scene.json"), std::string::npos);
+  }
+}
+
+TEST(BuiltinScenes, EveryBuiltinSceneBuilds) {
+  for (const BuiltinScene& builtin : builtinScenes()) {
+    SCOPED_TRACE(builtin.name);
+    const SceneDescription scene = builtin.make();
+    EXPECT_EQ(scene.name, builtin.name);
+    EXPECT_FALSE(builtin.description.empty());
+    World world = buildWorld(scene);
+    EXPECT_EQ(world.bodyCount(), scene.bodies.size());
+    world.step();
+  }
+}
+
+}  // namespace
+}  // namespace physdbg
