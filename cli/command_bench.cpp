@@ -1,0 +1,68 @@
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "bench/bench.h"
+#include "cli/arguments.h"
+#include "cli/commands.h"
+
+namespace physdbg::cli {
+namespace {
+
+std::string formatNumber(const nlohmann::json& value) {
+  if (value.is_null()) return "-";
+  char text[32];
+  if (value.is_number_integer()) std::snprintf(text, sizeof text, "%lld", value.get<long long>());
+  else if (value.is_number()) std::snprintf(text, sizeof text, "%.4g", value.get<double>());
+  else return value.is_string() ? value.get<std::string>() : value.dump();
+  return text;
+}
+
+void printRow(const nlohmann::json& record) {
+  std::printf("%-34s %8s %12s %-22s %12s %8s\n", formatNumber(record["name"]).c_str(),
+              formatNumber(record["n"]).c_str(), formatNumber(record["ours_ms"]).c_str(),
+              formatNumber(record["peer"]).c_str(), formatNumber(record["peer_ms"]).c_str(),
+              formatNumber(record["ratio"]).c_str());
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int runBench(const std::vector<std::string>& args) {
+  std::string names;
+  for (const auto& benchmark : bench::allBenchmarks()) names += "\n  " + benchmark.name + ": " + benchmark.description;
+  const CommandSpec spec{"bench",
+                         "[NAME] [--json] [--quick]",
+                         "Runs the benchmark NAME, or all of them, each side by side with its peer engine in the same "
+                         "run.\nratio = ours / peer: below 1 means physdbg is faster. Benchmarks:" + names,
+                         {{"--json", "", "", "print one JSON object per line instead of a table"},
+                          {"--quick", "", "", "small sizes (a smoke test, not a measurement)"}},
+                         0,
+                         1};
+  const auto parsed = Arguments::parse(spec, args);
+  if (!parsed) return 0;
+  const std::string wanted = parsed->positional().empty() ? "" : parsed->positional()[0];
+  std::vector<bench::Benchmark> selected;
+  for (const auto& benchmark : bench::allBenchmarks()) {
+    if (wanted.empty() || benchmark.name == wanted) selected.push_back(benchmark);
+  }
+  if (selected.empty()) throw UsageError("unknown benchmark '" + wanted + "'; available:" + names);
+  const bool json = parsed->has("--json");
+  if (!json) printRow({{"name", "name"}, {"n", "n"}, {"ours_ms", "ours_ms"}, {"peer", "peer"}, {"peer_ms", "peer_ms"},
+                       {"ratio", "ratio"}});
+  bench::BenchOptions options;
+  options.quick = parsed->has("--quick");
+  for (const auto& benchmark : selected) {
+    benchmark.run(options, [&](const nlohmann::json& record) {
+      if (json) {
+        std::cout << record.dump() << std::endl;
+      } else {
+        printRow(record);
+      }
+    });
+  }
+  return 0;
+}
+
+}  // namespace physdbg::cli

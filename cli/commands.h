@@ -1,0 +1,20 @@
+#pragma once
+// One function per physdbg subcommand; each returns the process exit code.
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace physdbg::cli {
+
+struct Subcommand {
+  std::string name;
+  std::string summary;
+  std::function<int(const std::vector<std::string>& args)> run;
+};
+
+int runScenes(const std::vector<std::string>& args);
+int runSimulate(const std::vector<std::string>& args);
+int runRender(const std::vector<std::string>& args);
+int runBench(const std::vector<std::string>& args);
+
+}  // namespace physdbg::cli

@@ -1,0 +1,73 @@
+// physdbg: the command that wires scenes, the engine, the renderer and the
+// benchmarks together. Exit codes: 0 success, 1 the run itself failed (for
+// example a body became NaN), 2 bad usage or bad input.
+#include <exception>
+#include <iostream>
+#include <new>
+
+#include "cli/arguments.h"
+#include "cli/commands.h"
+#include "scenes/scene.h"
+
+namespace {
+
+using physdbg::cli::Subcommand;
+
+const std::vector<Subcommand>& subcommands() {
+  static const std::vector<Subcommand> commands = {
+      {"scenes", "list the built-in scenes", physdbg::cli::runScenes},
+      {"simulate", "run a scene without rendering; summary, CSV trace, state hash", physdbg::cli::runSimulate},
+      {"render", "simulate a scene and write a PNG frame sequence (and an MP4)", physdbg::cli::runRender},
+      {"bench", "run benchmarks side by side with peer engines, print JSON", physdbg::cli::runBench},
+  };
+  return commands;
+}
+
+void printUsage(std::ostream& out) {
+  out << "usage: physdbg COMMAND [ARGS...]\n\nphysdbg: rigid-body physics with a visual debugger.\n\ncommands:\n";
+  for (const Subcommand& command : subcommands()) {
+    std::string name = "  " + command.name;
+    name.resize(14, ' ');
+    out << name << command.summary << "\n";
+  }
+  out << "\nRun 'physdbg COMMAND --help' for a command's options.\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    printUsage(std::cerr);
+    return 2;
+  }
+  const std::string name = argv[1];
+  if (name == "--help" || name == "-h" || name == "help") {
+    printUsage(std::cout);
+    return 0;
+  }
+  const std::vector<std::string> args(argv + 2, argv + argc);
+  for (const Subcommand& command : subcommands()) {
+    if (command.name != name) continue;
+    try {
+      return command.run(args);
+    } catch (const physdbg::cli::UsageError& error) {
+      std::cerr << "physdbg " << name << ": " << error.what() << "\n";
+      return 2;
+    } catch (const physdbg::SceneError& error) {
+      std::cerr << "physdbg " << name << ": " << error.what() << "\n";
+      return 2;
+    } catch (const std::invalid_argument& error) {
+      std::cerr << "physdbg " << name << ": " << error.what() << "\n";
+      return 2;
+    } catch (const std::bad_alloc&) {
+      std::cerr << "physdbg " << name << ": out of memory\n";
+      return 1;
+    } catch (const std::exception& error) {
+      std::cerr << "physdbg " << name << ": error: " << error.what() << "\n";
+      return 1;
+    }
+  }
+  std::cerr << "physdbg: unknown command '" << name << "'\n\n";
+  printUsage(std::cerr);
+  return 2;
+}

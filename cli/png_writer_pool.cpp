@@ -1,0 +1,74 @@
+#include "cli/png_writer_pool.h"
+
+#include <chrono>
+
+namespace physdbg::cli {
+
+PngWriterPool::PngWriterPool(int workers, std::size_t maxQueued) : maxQueued_(maxQueued) {
+  for (int i = 0; i < workers; ++i) workers_.emplace_back([this] { work(); });
+}
+
+PngWriterPool::~PngWriterPool() {
+  {
+    std::unique_lock lock(mutex_);
+    stopping_ = true;
+  }
+  changed_.notify_all();
+  workers_.clear();  // joins
+}
+
+void PngWriterPool::submit(std::string path, render::Image image) {
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [&] { return queue_.size() < maxQueued_ || failure_; });
+  if (failure_) rethrowFailure();
+  queue_.push_back({std::move(path), std::move(image)});
+  changed_.notify_all();
+}
+
+void PngWriterPool::finish() {
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [&] { return (queue_.empty() && busy_ == 0) || failure_; });
+  if (failure_) rethrowFailure();
+}
+
+double PngWriterPool::encodeSeconds() const {
+  std::scoped_lock lock(mutex_);
+  return encodeSeconds_;
+}
+
+void PngWriterPool::rethrowFailure() {
+  std::exception_ptr failure = failure_;
+  std::rethrow_exception(failure);
+}
+
+void PngWriterPool::work() {
+  for (;;) {
+    Job job;
+    {
+      std::unique_lock lock(mutex_);
+      changed_.wait(lock, [&] { return !queue_.empty() || stopping_; });
+      if (queue_.empty()) return;
+      job = std::move(queue_.front());
+      queue_.pop_front();
+      ++busy_;
+    }
+    changed_.notify_all();
+    const auto start = std::chrono::steady_clock::now();
+    std::exception_ptr failure;
+    try {
+      render::writePng(job.path, job.image);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    {
+      std::scoped_lock lock(mutex_);
+      --busy_;
+      encodeSeconds_ += seconds;
+      if (failure && !failure_) failure_ = failure;
+    }
+    changed_.notify_all();
+  }
+}
+
+}  // namespace physdbg::cli

@@ -1,0 +1,50 @@
+#pragma once
+// Encodes PNG frames on worker threads while the main thread simulates and
+// draws the next frame: PNG encoding, not drawing, is the bottleneck of a
+// debug video (see shared NOTES). The queue is bounded so memory stays flat.
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "render/image.h"
+
+namespace physdbg::cli {
+
+class PngWriterPool {
+ public:
+  PngWriterPool(int workers, std::size_t maxQueued);
+  ~PngWriterPool();  // waits for queued frames
+  PngWriterPool(const PngWriterPool&) = delete;
+  PngWriterPool& operator=(const PngWriterPool&) = delete;
+
+  // Blocks while the queue is full. Rethrows a worker's failure.
+  void submit(std::string path, render::Image image);
+  // Waits until every submitted frame is written; rethrows a worker's failure.
+  void finish();
+
+  double encodeSeconds() const;  // summed over workers
+
+ private:
+  struct Job {
+    std::string path;
+    render::Image image;
+  };
+  void work();
+  void rethrowFailure();
+
+  mutable std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<Job> queue_;
+  std::size_t maxQueued_;
+  int busy_ = 0;
+  bool stopping_ = false;
+  std::exception_ptr failure_;
+  double encodeSeconds_ = 0;
+  std::vector<std::jthread> workers_;
+};
+
+}  // namespace physdbg::cli
