@@ -1,0 +1,158 @@
+#include "render/frame_batches.h"
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include "render/text_geometry.h"
+
+namespace physdbg::render {
+namespace {
+
+using debugdraw::Color;
+using Eigen::Quaterniond;
+using Eigen::Vector3d;
+
+// Arrow heads are a fixed fraction of the arrow so they scale with the scene.
+constexpr double kHeadLengthFraction = 0.2;
+constexpr double kHeadRadiusFraction = 0.4;  // of the head length
+
+void requireFinite(const Vector3d& value, const char* what) {
+  if (!value.allFinite()) throw std::invalid_argument(std::string("debug draw: ") + what + " is not finite");
+}
+
+void requireNonNegative(double value, const char* what) {
+  if (!(value >= 0) || !std::isfinite(value))
+    throw std::invalid_argument(std::string("debug draw: ") + what + " must be finite and >= 0");
+}
+
+Quaterniond normalizedOrientation(const Quaterniond& orientation, const char* what) {
+  const double norm = orientation.norm();
+  if (!(norm > 1e-12) || !std::isfinite(norm))
+    throw std::invalid_argument(std::string("debug draw: ") + what + " orientation is not a rotation");
+  return Quaterniond(orientation.coeffs() / norm);
+}
+
+void copy(float* target, const Vector3d& value) {
+  for (int i = 0; i < 3; ++i) target[i] = static_cast<float>(value[i]);
+}
+
+void copy(float* target, const Color& color) {
+  target[0] = color.r, target[1] = color.g, target[2] = color.b, target[3] = color.a;
+}
+
+Instance makeInstance(const Vector3d& relativeCenter, const Quaterniond& rotation, const Vector3d& scale,
+                      double stretch, const Color& color) {
+  Instance instance{};
+  copy(instance.translation, relativeCenter);
+  const Eigen::Vector4d q = rotation.coeffs();  // x, y, z, w
+  for (int i = 0; i < 4; ++i) instance.rotation[i] = static_cast<float>(q[i]);
+  copy(instance.scale, scale);
+  instance.scale[3] = static_cast<float>(stretch);
+  copy(instance.color, color);
+  return instance;
+}
+
+template <typename Box>
+Instance boxInstance(const Box& box, const Vector3d& origin, const char* what) {
+  requireFinite(box.center, what);
+  requireFinite(box.halfExtents, what);
+  if ((box.halfExtents.array() < 0).any())
+    throw std::invalid_argument(std::string("debug draw: ") + what + " half extents must be >= 0");
+  return makeInstance(box.center - origin, normalizedOrientation(box.orientation, what), box.halfExtents, 0,
+                      box.color);
+}
+
+void addSolids(const debugdraw::Frame& frame, const Vector3d& origin, FrameBatches& batches) {
+  for (const auto& box : frame.boxes) batches.boxes.push_back(boxInstance(box, origin, "solid box"));
+  for (const auto& sphere : frame.spheres) {
+    requireFinite(sphere.center, "sphere centre");
+    requireNonNegative(sphere.radius, "sphere radius");
+    batches.spheres.push_back(makeInstance(sphere.center - origin, normalizedOrientation(sphere.orientation, "sphere"),
+                                           Vector3d::Constant(sphere.radius), 0, sphere.color));
+  }
+  for (const auto& capsule : frame.capsules) {
+    requireFinite(capsule.center, "capsule centre");
+    requireNonNegative(capsule.radius, "capsule radius");
+    requireNonNegative(capsule.halfHeight, "capsule half height");
+    batches.capsules.push_back(makeInstance(capsule.center - origin,
+                                            normalizedOrientation(capsule.orientation, "capsule"),
+                                            Vector3d::Constant(capsule.radius), capsule.halfHeight, capsule.color));
+  }
+}
+
+void addMeshes(const debugdraw::Frame& frame, const Vector3d& origin, FrameBatches& batches) {
+  std::map<const debugdraw::TriangleMesh*, std::size_t> batchOfMesh;  // lookup only; order comes from the frame
+  for (const auto& solid : frame.meshes) {
+    if (!solid.mesh) throw std::invalid_argument("debug draw: solid mesh has no mesh");
+    requireFinite(solid.center, "mesh centre");
+    auto [entry, inserted] = batchOfMesh.try_emplace(solid.mesh.get(), batches.meshes.size());
+    if (inserted) batches.meshes.push_back(MeshBatch{solid.mesh.get(), {}});
+    batches.meshes[entry->second].instances.push_back(makeInstance(
+        solid.center - origin, normalizedOrientation(solid.orientation, "mesh"), Vector3d::Ones(), 0, solid.color));
+  }
+}
+
+ColoredVertex coloredVertex(const Vector3d& relative, const Color& color) {
+  ColoredVertex vertex{};
+  copy(vertex.position, relative);
+  copy(vertex.color, color);
+  return vertex;
+}
+
+void addLine(const Vector3d& from, const Vector3d& to, const Color& color, const Vector3d& origin,
+             FrameBatches& batches) {
+  batches.lines.push_back(coloredVertex(from - origin, color));
+  batches.lines.push_back(coloredVertex(to - origin, color));
+}
+
+void addArrow(const debugdraw::Arrow& arrow, const Vector3d& origin, FrameBatches& batches) {
+  requireFinite(arrow.from, "arrow start");
+  requireFinite(arrow.to, "arrow end");
+  const Vector3d shaft = arrow.to - arrow.from;
+  const double length = shaft.norm();
+  if (length <= 0) return;  // nothing to point with
+  const Vector3d direction = shaft / length;
+  const double headLength = kHeadLengthFraction * length;
+  const Vector3d headBase = arrow.to - direction * headLength;
+  addLine(arrow.from, headBase, arrow.color, origin, batches);
+  const Quaterniond rotation = Quaterniond::FromTwoVectors(Vector3d::UnitY(), direction);
+  const double headRadius = kHeadRadiusFraction * headLength;
+  batches.arrowHeads.push_back(makeInstance(headBase - origin, rotation,
+                                            Vector3d(headRadius, headLength, headRadius), 0, arrow.color));
+}
+
+void addOverlays(const debugdraw::Frame& frame, const Vector3d& origin, FrameBatches& batches) {
+  for (const auto& box : frame.wireBoxes) batches.wireBoxes.push_back(boxInstance(box, origin, "wire box"));
+  for (const auto& line : frame.lines) {
+    requireFinite(line.from, "line start");
+    requireFinite(line.to, "line end");
+    addLine(line.from, line.to, line.color, origin, batches);
+  }
+  for (const auto& arrow : frame.arrows) addArrow(arrow, origin, batches);
+  for (const auto& point : frame.points) {
+    requireFinite(point.position, "point");
+    requireNonNegative(point.sizePixels, "point size");
+    PointVertex vertex{};
+    copy(vertex.position, point.position - origin);
+    vertex.size = point.sizePixels;
+    copy(vertex.color, point.color);
+    batches.points.push_back(vertex);
+  }
+  for (const auto& text : frame.texts) appendTextOutline(text, batches.texts);
+  for (const auto& text : frame.texts) appendText(text, batches.texts);
+}
+
+}  // namespace
+
+FrameBatches buildFrameBatches(const debugdraw::Frame& frame, const Vector3d& origin) {
+  requireFinite(origin, "camera origin");
+  FrameBatches batches;
+  addSolids(frame, origin, batches);
+  addMeshes(frame, origin, batches);
+  addOverlays(frame, origin, batches);
+  return batches;
+}
+
+}  // namespace physdbg::render

@@ -1,0 +1,58 @@
+#pragma once
+// A Frame flattened into float arrays ready for upload, positions relative to
+// `origin` (the camera target): subtracting in double before converting to
+// float keeps a scene at 1e7 m as precise as one at the origin.
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "debugdraw/primitives.h"
+
+namespace physdbg::render {
+
+// Per-instance data of the instanced shaders (boxes, spheres, capsules, meshes,
+// arrow heads, wire boxes). scale.w is the capsule half height.
+struct Instance {
+  float translation[3];
+  float rotation[4];  // unit quaternion x, y, z, w
+  float scale[4];
+  float color[4];
+};
+
+struct ColoredVertex {
+  float position[3];
+  float color[4];
+};
+
+struct PointVertex {
+  float position[3];
+  float size;
+  float color[4];
+};
+
+// Screen-space text vertex in pixels from the top-left corner.
+struct TextVertex {
+  float position[2];
+  float color[4];
+};
+
+// Solid meshes sharing one TriangleMesh, in order of first appearance.
+struct MeshBatch {
+  const debugdraw::TriangleMesh* mesh = nullptr;
+  std::vector<Instance> instances;
+};
+
+struct FrameBatches {
+  std::vector<Instance> boxes, spheres, capsules, arrowHeads, wireBoxes;
+  std::vector<MeshBatch> meshes;
+  std::vector<ColoredVertex> lines;  // pairs: lines, then arrow shafts
+  std::vector<PointVertex> points;
+  std::vector<TextVertex> texts;     // triangles: outlines first, then glyphs
+};
+
+// Throws std::invalid_argument for non-finite positions, negative sizes, a
+// zero quaternion, a solid mesh without mesh, or a non-positive text scale.
+FrameBatches buildFrameBatches(const debugdraw::Frame& frame, const Eigen::Vector3d& origin);
+
+}  // namespace physdbg::render

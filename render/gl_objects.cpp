@@ -1,0 +1,90 @@
+#include "render/gl_objects.h"
+
+#include <stdexcept>
+#include <vector>
+
+namespace physdbg::render {
+
+namespace detail {
+void deleteBuffer(GLuint name) { glDeleteBuffers(1, &name); }
+void deleteVertexArray(GLuint name) { glDeleteVertexArrays(1, &name); }
+void deleteProgram(GLuint name) { glDeleteProgram(name); }
+void deleteFramebuffer(GLuint name) { glDeleteFramebuffers(1, &name); }
+void deleteRenderbuffer(GLuint name) { glDeleteRenderbuffers(1, &name); }
+}  // namespace detail
+
+GlBuffer createBuffer() {
+  GLuint name = 0;
+  glGenBuffers(1, &name);
+  return GlBuffer(name);
+}
+
+GlVertexArray createVertexArray() {
+  GLuint name = 0;
+  glGenVertexArrays(1, &name);
+  return GlVertexArray(name);
+}
+
+GlFramebuffer createFramebuffer() {
+  GLuint name = 0;
+  glGenFramebuffers(1, &name);
+  return GlFramebuffer(name);
+}
+
+GlRenderbuffer createRenderbuffer() {
+  GLuint name = 0;
+  glGenRenderbuffers(1, &name);
+  return GlRenderbuffer(name);
+}
+
+namespace {
+
+// Owns a shader object only until it is linked into the program.
+class ShaderObject {
+ public:
+  ShaderObject(GLenum type, const char* source, const std::string& label) : name_(glCreateShader(type)) {
+    glShaderSource(name_, 1, &source, nullptr);
+    glCompileShader(name_);
+    GLint ok = 0;
+    glGetShaderiv(name_, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      std::vector<char> log(4096);
+      glGetShaderInfoLog(name_, static_cast<GLsizei>(log.size()), nullptr, log.data());
+      glDeleteShader(name_);
+      throw std::runtime_error("shader '" + label + "' does not compile: " + log.data());
+    }
+  }
+  ~ShaderObject() { glDeleteShader(name_); }
+  ShaderObject(const ShaderObject&) = delete;
+  ShaderObject& operator=(const ShaderObject&) = delete;
+  GLuint get() const { return name_; }
+
+ private:
+  GLuint name_;
+};
+
+}  // namespace
+
+GlProgram createProgram(const char* vertexSource, const char* fragmentSource, const std::string& label) {
+  ShaderObject vertex(GL_VERTEX_SHADER, vertexSource, label + " (vertex)");
+  ShaderObject fragment(GL_FRAGMENT_SHADER, fragmentSource, label + " (fragment)");
+  GlProgram program(glCreateProgram());
+  glAttachShader(program.get(), vertex.get());
+  glAttachShader(program.get(), fragment.get());
+  glLinkProgram(program.get());
+  GLint ok = 0;
+  glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+  if (!ok) {
+    std::vector<char> log(4096);
+    glGetProgramInfoLog(program.get(), static_cast<GLsizei>(log.size()), nullptr, log.data());
+    throw std::runtime_error("program '" + label + "' does not link: " + log.data());
+  }
+  return program;
+}
+
+void checkGlError(const char* what) {
+  const GLenum error = glGetError();
+  if (error != GL_NO_ERROR) throw std::runtime_error(std::string("GL error ") + std::to_string(error) + " in " + what);
+}
+
+}  // namespace physdbg::render

@@ -1,0 +1,190 @@
+#include "render/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "render/frame_batches.h"
+#include "render/gl_context.h"
+#include "render/gpu_mesh.h"
+#include "render/mesh_cache.h"
+#include "render/render_target.h"
+#include "render/shaders.h"
+#include "render/vertex_stream.h"
+
+namespace physdbg::render {
+namespace {
+
+using Eigen::Vector3d;
+
+constexpr int kMaxDimension = 16384;
+constexpr int kMaxSamples = 16;
+constexpr float kBackground[4] = {0.11f, 0.12f, 0.14f, 1.0f};
+constexpr int kSphereSegments = 32, kSphereRings = 16, kConeSegments = 16;
+
+void validate(const RendererOptions& options) {
+  if (options.width <= 0 || options.height <= 0 || options.width > kMaxDimension || options.height > kMaxDimension)
+    throw std::invalid_argument("Renderer: width and height must be in 1.." + std::to_string(kMaxDimension) +
+                                ", got " + std::to_string(options.width) + "x" + std::to_string(options.height));
+  if (options.samples < 0 || options.samples > kMaxSamples)
+    throw std::invalid_argument("Renderer: samples must be in 0.." + std::to_string(kMaxSamples));
+}
+
+// Light from above and behind the camera, a little to the right, so the three
+// faces of a box seen from a 3/4 view get clearly different brightness.
+Eigen::Vector3f lightDirection(const Camera& camera) {
+  const Vector3d back = (camera.eye - camera.target).normalized();
+  const Vector3d right = (-back).cross(camera.up).normalized();
+  return (0.5 * back + camera.up.normalized() + 0.3 * right).normalized().cast<float>();
+}
+
+struct DepthRange {
+  double nearDistance, farDistance;
+};
+
+// Near and far planes that enclose the frame's bounds with a small margin; a
+// near plane no closer than 1e-4 of the far one keeps 24-bit depth useful.
+DepthRange depthRange(const debugdraw::Frame& frame, const Camera& camera) {
+  const Bounds bounds = frameBounds(frame);
+  const Vector3d eye = camera.eye - camera.target;
+  const double distance = eye.norm();
+  if (bounds.empty()) return camera.orthographic ? DepthRange{0, 2 * distance} : DepthRange{distance * 1e-2, distance * 1e2};
+  const Vector3d forward = -eye / distance;
+  double nearest = std::numeric_limits<double>::infinity(), farthest = -nearest;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vector3d point((corner & 1 ? bounds.max : bounds.min).x(), (corner & 2 ? bounds.max : bounds.min).y(),
+                         (corner & 4 ? bounds.max : bounds.min).z());
+    const double depth = (point - camera.target - eye).dot(forward);
+    nearest = std::min(nearest, depth);
+    farthest = std::max(farthest, depth);
+  }
+  const double margin = 0.01 * (farthest - nearest) + 1e-6 * distance + 1e-9;
+  farthest += margin;
+  nearest -= margin;
+  if (camera.orthographic) return {nearest, farthest};
+  if (farthest <= 0) return {distance * 1e-2, distance};  // everything behind the camera
+  return {std::max(nearest, farthest * 1e-4), farthest};
+}
+
+}  // namespace
+
+class Renderer::Impl {
+ public:
+  explicit Impl(const RendererOptions& options)
+      : options_(options),
+        context_(createOsMesaContext()),
+        solid_(createProgram(shaders::kSolidVertex, shaders::kSolidFragment, "solid")),
+        wire_(createProgram(shaders::kWireVertex, shaders::kUnlitFragment, "wire")),
+        line_(createProgram(shaders::kLineVertex, shaders::kUnlitFragment, "line")),
+        point_(createProgram(shaders::kPointVertex, shaders::kPointFragment, "point")),
+        text_(createProgram(shaders::kTextVertex, shaders::kUnlitFragment, "text")),
+        cube_(uploadInstancedMesh(unitCube(), GL_TRIANGLES)),
+        sphere_(uploadInstancedMesh(capsuleSphere(kSphereSegments, kSphereRings), GL_TRIANGLES)),
+        cone_(uploadInstancedMesh(unitCone(kConeSegments), GL_TRIANGLES)),
+        cubeEdges_(uploadInstancedMesh(unitCubeEdges(), GL_LINES)),
+        lines_(sizeof(ColoredVertex), {{0, 3, offsetof(ColoredVertex, position)}, {1, 4, offsetof(ColoredVertex, color)}}),
+        points_(sizeof(PointVertex), {{0, 3, offsetof(PointVertex, position)},
+                                      {1, 1, offsetof(PointVertex, size)},
+                                      {2, 4, offsetof(PointVertex, color)}}),
+        texts_(sizeof(TextVertex), {{0, 2, offsetof(TextVertex, position)}, {1, 4, offsetof(TextVertex, color)}}),
+        target_(options.width, options.height, options.samples) {}
+
+  // GL objects must die while their context is current.
+  ~Impl() { context_->makeCurrent(); }
+
+  Image render(const debugdraw::Frame& frame, const Camera& camera) {
+    validateCamera(camera);
+    const FrameBatches batches = buildFrameBatches(frame, camera.target);
+    context_->makeCurrent();
+    target_.bindForDrawing();
+    setUpState();
+    const Eigen::Matrix4f viewProjection = viewProjectionMatrix(frame, camera);
+    drawSolids(batches, viewProjection, lightDirection(camera));
+    drawOverlays(batches, viewProjection);
+    drawText(batches);
+    meshCache_.endFrame();
+    checkGlError("rendering a frame");
+    return target_.read();
+  }
+
+  const RendererOptions& options() const { return options_; }
+
+ private:
+  void setUpState() {
+    glClearColor(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    // Alpha stays 1 over the opaque background so PNGs are opaque.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+  }
+
+  Eigen::Matrix4f viewProjectionMatrix(const debugdraw::Frame& frame, const Camera& camera) const {
+    const DepthRange range = depthRange(frame, camera);
+    const double aspect = static_cast<double>(options_.width) / options_.height;
+    return (projectionMatrix(camera, aspect, range.nearDistance, range.farDistance) * relativeViewMatrix(camera))
+        .cast<float>();
+  }
+
+  static void useProgram(const GlProgram& program, const Eigen::Matrix4f& viewProjection) {
+    glUseProgram(program.get());
+    glUniformMatrix4fv(glGetUniformLocation(program.get(), "uViewProjection"), 1, GL_FALSE, viewProjection.data());
+  }
+
+  void drawSolids(const FrameBatches& batches, const Eigen::Matrix4f& viewProjection, const Eigen::Vector3f& light) {
+    // Pushed back slightly so wire boxes and lines on their surfaces stay visible.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
+    useProgram(solid_, viewProjection);
+    glUniform3fv(glGetUniformLocation(solid_.get(), "uLightDirection"), 1, light.data());
+    drawInstances(cube_, batches.boxes);
+    drawInstances(sphere_, batches.spheres);
+    drawInstances(sphere_, batches.capsules);
+    for (const MeshBatch& batch : batches.meshes) drawInstances(meshCache_.get(*batch.mesh), batch.instances);
+    drawInstances(cone_, batches.arrowHeads);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
+
+  void drawOverlays(const FrameBatches& batches, const Eigen::Matrix4f& viewProjection) {
+    useProgram(wire_, viewProjection);
+    drawInstances(cubeEdges_, batches.wireBoxes);
+    useProgram(line_, viewProjection);
+    lines_.draw(batches.lines, GL_LINES);
+    useProgram(point_, viewProjection);
+    points_.draw(batches.points, GL_POINTS);
+  }
+
+  void drawText(const FrameBatches& batches) {
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(text_.get());
+    glUniform2f(glGetUniformLocation(text_.get(), "uViewportSize"), static_cast<float>(options_.width),
+                static_cast<float>(options_.height));
+    texts_.draw(batches.texts, GL_TRIANGLES);
+  }
+
+  RendererOptions options_;
+  std::unique_ptr<GlContext> context_;  // declared first: destroyed after every GL object
+  GlProgram solid_, wire_, line_, point_, text_;
+  InstancedMesh cube_, sphere_, cone_, cubeEdges_;
+  VertexStream lines_, points_, texts_;
+  MeshCache meshCache_;
+  RenderTarget target_;
+};
+
+Renderer::Renderer(const RendererOptions& options) {
+  validate(options);
+  impl_ = std::make_unique<Impl>(options);
+}
+
+Renderer::~Renderer() = default;
+
+Image Renderer::render(const debugdraw::Frame& frame, const Camera& camera) { return impl_->render(frame, camera); }
+
+const RendererOptions& Renderer::options() const { return impl_->options(); }
+
+}  // namespace physdbg::render

@@ -1,0 +1,39 @@
+#pragma once
+// Off-screen renderer for debug-draw frames. Knows nothing of physics: it draws
+// the primitives of a Frame, each kind with one instanced draw call.
+#include <memory>
+
+#include "debugdraw/primitives.h"
+#include "render/camera.h"
+#include "render/image.h"
+
+namespace physdbg::render {
+
+struct RendererOptions {
+  int width = 1280, height = 720;
+  // MSAA samples, 0 = off. Off by default: on llvmpipe 4x costs several times
+  // the draw time (see render/README.md for measurements).
+  int samples = 0;
+};
+
+class Renderer {
+ public:
+  // Throws std::invalid_argument for bad options, std::runtime_error when no
+  // GL 3.3 core context can be created.
+  explicit Renderer(const RendererOptions& options);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Same frame and camera give the same bytes. Throws std::invalid_argument for
+  // bad primitives or camera, std::runtime_error on GL failure.
+  Image render(const debugdraw::Frame& frame, const Camera& camera);
+
+  const RendererOptions& options() const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace physdbg::render

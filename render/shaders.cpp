@@ -1,0 +1,106 @@
+#include "render/shaders.h"
+
+namespace physdbg::render::shaders {
+
+#define PHYSDBG_INSTANCE_INPUTS                  \
+  "layout(location = 2) in vec3 iTranslation;\n" \
+  "layout(location = 3) in vec4 iRotation;\n"    \
+  "layout(location = 4) in vec4 iScale;\n"       \
+  "layout(location = 5) in vec4 iColor;\n"       \
+  "vec3 rotate(vec4 q, vec3 v) {\n"              \
+  "  vec3 t = 2.0 * cross(q.xyz, v);\n"          \
+  "  return v + q.w * t + cross(q.xyz, t);\n"    \
+  "}\n"
+
+const char* const kSolidVertex =
+    "#version 330 core\n"
+    "layout(location = 0) in vec4 aPosition;\n"
+    "layout(location = 1) in vec3 aNormal;\n" PHYSDBG_INSTANCE_INPUTS
+    "uniform mat4 uViewProjection;\n"
+    "out vec3 vNormal;\n"
+    "out vec4 vColor;\n"
+    "void main() {\n"
+    "  vec3 local = aPosition.xyz * iScale.xyz + vec3(0.0, aPosition.w * iScale.w, 0.0);\n"
+    // Inverse-transpose of a scale is its reciprocal; the floor keeps flat boxes finite.
+    "  vNormal = rotate(iRotation, aNormal / max(iScale.xyz, vec3(1e-30)));\n"
+    "  vColor = iColor;\n"
+    "  gl_Position = uViewProjection * vec4(rotate(iRotation, local) + iTranslation, 1.0);\n"
+    "}\n";
+
+const char* const kSolidFragment =
+    "#version 330 core\n"
+    "in vec3 vNormal;\n"
+    "in vec4 vColor;\n"
+    "uniform vec3 uLightDirection;\n"
+    "out vec4 fragColor;\n"
+    "void main() {\n"
+    "  float lambert = max(dot(normalize(vNormal), uLightDirection), 0.0);\n"
+    "  fragColor = vec4(vColor.rgb * (0.3 + 0.7 * lambert), vColor.a);\n"
+    "}\n";
+
+const char* const kWireVertex =
+    "#version 330 core\n"
+    "layout(location = 0) in vec4 aPosition;\n" PHYSDBG_INSTANCE_INPUTS
+    "uniform mat4 uViewProjection;\n"
+    "out vec4 vColor;\n"
+    "void main() {\n"
+    "  vColor = iColor;\n"
+    "  gl_Position = uViewProjection * vec4(rotate(iRotation, aPosition.xyz * iScale.xyz) + iTranslation, 1.0);\n"
+    "}\n";
+
+const char* const kLineVertex =
+    "#version 330 core\n"
+    "layout(location = 0) in vec3 aPosition;\n"
+    "layout(location = 1) in vec4 aColor;\n"
+    "uniform mat4 uViewProjection;\n"
+    "out vec4 vColor;\n"
+    "void main() {\n"
+    "  vColor = aColor;\n"
+    "  gl_Position = uViewProjection * vec4(aPosition, 1.0);\n"
+    "}\n";
+
+const char* const kUnlitFragment =
+    "#version 330 core\n"
+    "in vec4 vColor;\n"
+    "out vec4 fragColor;\n"
+    "void main() { fragColor = vColor; }\n";
+
+const char* const kPointVertex =
+    "#version 330 core\n"
+    "layout(location = 0) in vec3 aPosition;\n"
+    "layout(location = 1) in float aSize;\n"
+    "layout(location = 2) in vec4 aColor;\n"
+    "uniform mat4 uViewProjection;\n"
+    "out vec4 vColor;\n"
+    "void main() {\n"
+    "  vColor = aColor;\n"
+    "  gl_PointSize = aSize;\n"
+    "  gl_Position = uViewProjection * vec4(aPosition, 1.0);\n"
+    // Pull towards the camera so a point on a slanted surface is not half buried.
+    "  gl_Position.z -= 0.002 * gl_Position.w;\n"
+    "}\n";
+
+const char* const kPointFragment =
+    "#version 330 core\n"
+    "in vec4 vColor;\n"
+    "out vec4 fragColor;\n"
+    "void main() {\n"
+    "  vec2 offset = gl_PointCoord - vec2(0.5);\n"
+    "  if (dot(offset, offset) > 0.25) discard;\n"
+    "  fragColor = vColor;\n"
+    "}\n";
+
+const char* const kTextVertex =
+    "#version 330 core\n"
+    "layout(location = 0) in vec2 aPixel;\n"
+    "layout(location = 1) in vec4 aColor;\n"
+    "uniform vec2 uViewportSize;\n"
+    "out vec4 vColor;\n"
+    "void main() {\n"
+    "  vColor = aColor;\n"
+    "  gl_Position = vec4(2.0 * aPixel.x / uViewportSize.x - 1.0, 1.0 - 2.0 * aPixel.y / uViewportSize.y, 0.0, 1.0);\n"
+    "}\n";
+
+#undef PHYSDBG_INSTANCE_INPUTS
+
+}  // namespace physdbg::render::shaders

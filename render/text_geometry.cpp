@@ -1,0 +1,69 @@
+#include "render/text_geometry.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <stb/stb_easy_font.h>
+
+namespace physdbg::render {
+namespace {
+
+constexpr debugdraw::Color kOutlineColor{0.0f, 0.0f, 0.0f, 0.85f};
+
+struct Quad {
+  float x0, y0, x1, y1;  // font units, y down
+};
+
+// stb_easy_font writes 4 vertices of 16 bytes (x, y, z floats, 4 colour bytes)
+// per quad, on average ~270 bytes per character; 1 KiB per character is ample.
+std::vector<Quad> glyphQuads(const std::string& text) {
+  std::vector<char> characters(text.begin(), text.end());
+  characters.push_back('\0');
+  std::vector<float> buffer((text.size() + 1) * 256);
+  const int quadCount = stb_easy_font_print(0, 0, characters.data(), nullptr, buffer.data(),
+                                            static_cast<int>(buffer.size() * sizeof(float)));
+  std::vector<Quad> quads(static_cast<std::size_t>(quadCount));
+  for (int index = 0; index < quadCount; ++index) {
+    const float* corner = buffer.data() + static_cast<std::size_t>(index) * 16;  // 4 vertices x 4 words
+    quads[index] = Quad{corner[0], corner[1], corner[8], corner[9]};           // first and third corner
+  }
+  return quads;
+}
+
+void validate(const debugdraw::Text& text) {
+  if (!(text.scale > 0) || !std::isfinite(text.scale))
+    throw std::invalid_argument("debug draw: text scale must be positive, got " + std::to_string(text.scale));
+  if (!std::isfinite(text.x) || !std::isfinite(text.y))
+    throw std::invalid_argument("debug draw: text position is not finite");
+}
+
+void appendQuads(const debugdraw::Text& text, float offsetX, float offsetY, const debugdraw::Color& color,
+                 std::vector<TextVertex>& triangles) {
+  const float originX = std::round(text.x) + offsetX, originY = std::round(text.y) + offsetY;
+  auto vertex = [&](float x, float y) {
+    return TextVertex{{originX + std::round(x * text.scale), originY + std::round(y * text.scale)},
+                      {color.r, color.g, color.b, color.a}};
+  };
+  for (const Quad& quad : glyphQuads(text.text)) {
+    const TextVertex a = vertex(quad.x0, quad.y0), b = vertex(quad.x1, quad.y0);
+    const TextVertex c = vertex(quad.x1, quad.y1), d = vertex(quad.x0, quad.y1);
+    triangles.insert(triangles.end(), {a, b, c, a, c, d});
+  }
+}
+
+}  // namespace
+
+void appendText(const debugdraw::Text& text, std::vector<TextVertex>& triangles) {
+  validate(text);
+  appendQuads(text, 0, 0, text.color, triangles);
+}
+
+void appendTextOutline(const debugdraw::Text& text, std::vector<TextVertex>& triangles) {
+  validate(text);
+  const float step = std::max(1.0f, std::round(text.scale * 0.5f));
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx)
+      if (dx != 0 || dy != 0) appendQuads(text, dx * step, dy * step, kOutlineColor, triangles);
+}
+
+}  // namespace physdbg::render

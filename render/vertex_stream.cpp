@@ -1,0 +1,26 @@
+#include "render/vertex_stream.h"
+
+namespace physdbg::render {
+
+VertexStream::VertexStream(GLsizei stride, std::initializer_list<FloatAttribute> attributes)
+    : vertexArray_(createVertexArray()), buffer_(createBuffer()) {
+  glBindVertexArray(vertexArray_.get());
+  glBindBuffer(GL_ARRAY_BUFFER, buffer_.get());
+  for (const FloatAttribute& attribute : attributes) {
+    glEnableVertexAttribArray(attribute.location);
+    glVertexAttribPointer(attribute.location, attribute.size, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(attribute.offset));
+  }
+  glBindVertexArray(0);
+}
+
+void VertexStream::drawBytes(const void* data, std::size_t bytes, GLsizei count, GLenum mode) {
+  if (count == 0) return;
+  glBindVertexArray(vertexArray_.get());
+  glBindBuffer(GL_ARRAY_BUFFER, buffer_.get());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), data, GL_STREAM_DRAW);
+  glDrawArrays(mode, 0, count);
+  glBindVertexArray(0);
+}
+
+}  // namespace physdbg::render
