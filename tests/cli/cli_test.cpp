@@ -1,0 +1,164 @@
+// End-to-end tests of the physdbg command: exit codes, messages, outputs.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+#include "render/image.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr together
+};
+
+Result run(const std::string& arguments) {
+  const std::string command = std::string("LP_NUM_THREADS=1 ") + PHYSDBG_BINARY + " " + arguments + " 2>&1";
+  Result result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer{};
+  while (const std::size_t read = fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), read);
+  const int status = pclose(pipe);
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+class TempDir {
+ public:
+  TempDir() {
+    path_ = fs::temp_directory_path() / ("physdbg-cli-test-" + std::to_string(::getpid()) + "-" +
+                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() { fs::remove_all(path_); }
+  std::string file(const std::string& name, const std::string& content = "") const {
+    const fs::path path = path_ / name;
+    if (!content.empty()) std::ofstream(path) << content;
+    return path.string();
+  }
+  std::string path() const { return path_.string(); }
+
+ private:
+  fs::path path_;
+};
+
+TEST(Cli, HelpExitsZeroForEveryCommand) {
+  for (const char* command : {"--help", "scenes --help", "simulate --help", "render --help", "bench --help"}) {
+    const Result result = run(command);
+    EXPECT_EQ(result.exitCode, 0) << command << "\n" << result.output;
+    EXPECT_NE(result.output.find("usage: physdbg"), std::string::npos) << command;
+  }
+}
+
+TEST(Cli, BadUsageExitsTwoWithAMessage) {
+  struct Case {
+    const char* arguments;
+    const char* mentions;
+  };
+  for (const Case& c : {Case{"frobnicate", "unknown command"}, Case{"", "usage"},
+                        Case{"render default --sizes 10x10", "--sizes"}, Case{"render default --size 12", "--size"},
+                        Case{"render default --frames -3", "--frames"}, Case{"render default --layers shapes,glow", "glow"},
+                        Case{"simulate", "missing argument"}, Case{"simulate default --steps zero", "--steps"},
+                        Case{"simulate no_such_scene", "no_such_scene"}, Case{"bench no_such_bench", "no_such_bench"},
+                        Case{"render default -o /dev/null/frames", "/dev/null/frames"}}) {
+    const Result result = run(c.arguments);
+    EXPECT_EQ(result.exitCode, 2) << c.arguments << "\n" << result.output;
+    EXPECT_NE(result.output.find(c.mentions), std::string::npos) << c.arguments << "\n" << result.output;
+  }
+}
+
+TEST(Cli, BadSceneFilesExitTwoNamingFileAndKey) {
+  TempDir dir;
+  struct Case {
+    const char* json;
+    const char* mentions;
+  };
+  for (const Case& c : {Case{R"({"bodies": [{"shape": {"sphere": {"radius": -1}}}]})", "bodies[0].shape.sphere.radius"},
+                        Case{R"({"bodies": [{"shape": {"box": {"half_extents": [1, 1]}}}]})", "half_extents"},
+                        Case{R"({"bodies": [], "dt": -1})", "dt"}, Case{R"({"bodies": [}", "malformed JSON"},
+                        Case{R"({"bodies": [], "wind": 3})", "wind"},
+                        Case{R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "mass": "heavy"}]})", "mass"}}) {
+    const std::string scene = dir.file("bad.json", c.json);
+    for (const std::string& command : {"simulate " + scene, "render " + scene + " -o " + dir.path() + "/frames"}) {
+      const Result result = run(command);
+      EXPECT_EQ(result.exitCode, 2) << c.json << "\n" << result.output;
+      EXPECT_NE(result.output.find("bad.json"), std::string::npos) << result.output;
+      EXPECT_NE(result.output.find(c.mentions), std::string::npos) << result.output;
+    }
+  }
+}
+
+TEST(Cli, ScenesListsTheDefaultScene) {
+  const Result result = run("scenes");
+  EXPECT_EQ(result.exitCode, 0);
+  EXPECT_NE(result.output.find("default"), std::string::npos);
+}
+
+TEST(Cli, TraceHasTheDocumentedHeaderAndOneRowPerBodyPerStep) {
+  TempDir dir;
+  const std::string scene = dir.file("two.json", R"({"steps": 5, "bodies": [
+      {"shape": {"sphere": {"radius": 0.5}}, "position": [0, 10, 0]},
+      {"shape": {"box": {"half_extents": [1, 1, 1]}}, "static": true}]})");
+  const std::string trace = dir.file("trace.csv");
+  const Result result = run("simulate " + scene + " --trace " + trace);
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  std::ifstream file(trace);
+  std::string header;
+  std::getline(file, header);
+  EXPECT_EQ(header, "step,time,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz");
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(file, line);) rows.push_back(line);
+  ASSERT_EQ(rows.size(), 2u * 6u);
+  EXPECT_EQ(rows[0].rfind("0,0,0,0,10,0,1,0,0,0,", 0), 0u) << rows[0];
+  // Step 1 of semi-implicit Euler: v = g dt, y = 10 + g dt^2.
+  std::istringstream row(rows[2]);
+  std::vector<double> values;
+  for (std::string cell; std::getline(row, cell, ',');) values.push_back(std::stod(cell));
+  EXPECT_EQ(values[0], 1);
+  EXPECT_DOUBLE_EQ(values[4], 10 - 9.81 / 3600.0);
+  EXPECT_DOUBLE_EQ(values[11], -9.81 / 60.0);
+}
+
+TEST(Cli, SimulateHashIsTheSameRunAfterRun) {
+  const Result first = run("simulate default --steps 60 --hash");
+  const Result second = run("simulate default --steps 60 --hash");
+  ASSERT_EQ(first.exitCode, 0) << first.output;
+  const auto hashOf = [](const std::string& output) { return output.substr(output.find("state hash")); };
+  EXPECT_EQ(hashOf(first.output), hashOf(second.output));
+}
+
+TEST(Cli, RenderWritesFramesThatShowTheScene) {
+  TempDir dir;
+  const std::string scene = dir.file("red.json", R"({"steps": 3, "layers": "shapes",
+      "camera": {"eye": [0, 0, 8], "target": [0, 0, 0]},
+      "bodies": [{"shape": {"box": {"half_extents": [1, 1, 1]}}, "use_gravity": false}]})");
+  const Result result = run("render " + scene + " -o " + dir.path() + "/frames --size 64x48");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  for (int frame = 0; frame < 4; ++frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "/frames/frame_%05d.png", frame);
+    ASSERT_TRUE(fs::exists(dir.path() + name)) << name;
+  }
+  EXPECT_FALSE(fs::exists(dir.path() + "/frames/frame_00004.png"));
+  const physdbg::render::Image image = physdbg::render::readPng(dir.path() + "/frames/frame_00000.png");
+  ASSERT_EQ(image.width, 64);
+  ASSERT_EQ(image.height, 48);
+  // The body is lit and coloured (not background, not grey) in the middle, background in a corner.
+  const auto at = [&](int x, int y) { return &image.rgba[(static_cast<std::size_t>(y) * 64 + x) * 4]; };
+  const std::uint8_t* centre = at(32, 24);
+  const std::uint8_t* corner = at(1, 1);
+  EXPECT_GT(std::max({centre[0], centre[1], centre[2]}) - std::min({centre[0], centre[1], centre[2]}), 40);
+  EXPECT_LT(corner[0] + corner[1] + corner[2], 120);
+}
+
+}  // namespace
