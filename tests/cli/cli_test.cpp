@@ -85,7 +85,7 @@ TEST(Cli, BadSceneFilesExitTwoNamingFileAndKey) {
   };
   for (const Case& c : {Case{R"({"bodies": [{"shape": {"sphere": {"radius": -1}}}]})", "bodies[0].shape.sphere.radius"},
                         Case{R"({"bodies": [{"shape": {"box": {"half_extents": [1, 1]}}}]})", "half_extents"},
-                        Case{R"({"bodies": [], "dt": -1})", "dt"}, Case{R"({"bodies": [}", "malformed JSON"},
+                        Case{R"({"bodies": [], "dt": -1})", "dt"}, Case{R"({"bodies": [})", "malformed JSON"},
                         Case{R"({"bodies": [], "wind": 3})", "wind"},
                         Case{R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "mass": "heavy"}]})", "mass"}}) {
     const std::string scene = dir.file("bad.json", c.json);
