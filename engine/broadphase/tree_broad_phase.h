@@ -1,0 +1,58 @@
+#pragma once
+// Broad phase over a DynamicAabbTree with incremental pair finding: only
+// proxies whose fat box changed (reinserted, added, woken, put to sleep) query
+// the tree; pairs between proxies that did not change are carried over from
+// the previous call, since neither their boxes nor their eligibility changed.
+#include <vector>
+
+#include "engine/broadphase/broad_phase.h"
+#include "engine/broadphase/dynamic_aabb_tree.h"
+
+namespace physdbg {
+
+class TreeBroadPhase final : public BroadPhase {
+ public:
+  explicit TreeBroadPhase(const DynamicAabbTreeOptions& options = {});
+
+  int addProxy(const Aabb& tightBox, std::uint32_t body, ProxyMotion motion) override;
+  void removeProxy(int proxy) override;
+  void moveProxy(int proxy, const Aabb& tightBox, const Vec3& displacement) override;
+  void setProxyActive(int proxy, bool active) override;
+  void findPairs(std::vector<BodyPair>& pairs) override;
+  const Aabb& fatBox(int proxy) const override { return tree_.fatBox(proxy); }
+  BroadPhaseStats stats() const override { return stats_; }
+
+  const DynamicAabbTree& tree() const { return tree_; }
+  DynamicAabbTree& tree() { return tree_; }
+
+ private:
+  struct ProxyState {
+    std::uint32_t body = 0;
+    ProxyMotion motion = ProxyMotion::Static;
+    bool active = true;
+    bool touched = false;  // fat box or eligibility changed since the last findPairs
+  };
+  // Body ids ordered, proxy ids carried so stale pairs can be dropped.
+  struct ProxyPair {
+    std::uint32_t bodyA, bodyB;
+    int proxyA, proxyB;
+    auto operator<=>(const ProxyPair&) const = default;
+  };
+
+  void touch(int proxy);
+  bool drivesPairs(int proxy) const;
+  void queryChanged(int proxy);
+  void requireProxy(int proxy, const char* operation) const;
+
+  DynamicAabbTree tree_;
+  std::vector<ProxyState> proxies_;  // indexed by proxy id
+  std::vector<int> changed_;
+  std::vector<ProxyPair> pairs_;  // persistent, sorted
+  std::vector<ProxyPair> fresh_;
+  std::vector<ProxyPair> merged_;
+  std::vector<int> stack_;
+  BroadPhaseStats stats_;
+  long long reinsertedSinceFind_ = 0;
+};
+
+}  // namespace physdbg

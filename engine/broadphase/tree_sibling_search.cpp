@@ -1,0 +1,77 @@
+// Choosing where a new leaf goes. The cost of making node X the new leaf's
+// sibling is the area of the new parent, area(X + L), plus the growth
+// area(A + L) - area(A) of every ancestor A of X (each must be refit to
+// contain L). Growth only accumulates going down, so inherited growth plus
+// area(L), the smallest any new parent can be, bounds every node below.
+#include <algorithm>
+
+#include "engine/broadphase/dynamic_aabb_tree.h"
+
+namespace physdbg {
+namespace {
+
+struct LaterCandidateFirst {
+  template <typename Candidate>
+  bool operator()(const Candidate& x, const Candidate& y) const {
+    // Min-heap on the bound; node index breaks ties so the search is deterministic.
+    if (x.lowerBound != y.lowerBound) return x.lowerBound > y.lowerBound;
+    return x.node > y.node;
+  }
+};
+
+}  // namespace
+
+int DynamicAabbTree::findBestSiblingBranchAndBound(const Aabb& box) {
+  const double leafArea = box.surfaceArea();
+  int best = root_;
+  double bestCost = nodes_[root_].box.merged(box).surfaceArea();
+  heap_.clear();
+  heap_.push_back({leafArea, root_, 0.0});
+  while (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end(), LaterCandidateFirst{});
+    const Candidate candidate = heap_.back();
+    heap_.pop_back();
+    // Every remaining candidate is bounded below by this one's bound.
+    if (candidate.lowerBound >= bestCost) break;
+    const Node& node = nodes_[candidate.node];
+    const double directCost = node.box.merged(box).surfaceArea();
+    const double cost = directCost + candidate.inherited;
+    if (cost < bestCost) {
+      bestCost = cost;
+      best = candidate.node;
+    }
+    if (node.child1 == nullNode) continue;
+    const double inherited = candidate.inherited + directCost - node.box.surfaceArea();
+    const double lowerBound = inherited + leafArea;
+    if (lowerBound >= bestCost) continue;
+    for (const int child : {node.child1, node.child2}) {
+      heap_.push_back({lowerBound, child, inherited});
+      std::push_heap(heap_.begin(), heap_.end(), LaterCandidateFirst{});
+    }
+  }
+  return best;
+}
+
+// Greedy descent: stop where a new parent here is cheaper than the estimated
+// cost of going down either child; no backtracking.
+int DynamicAabbTree::findBestSiblingGreedy(const Aabb& box) const {
+  int index = root_;
+  while (nodes_[index].child1 != nullNode) {
+    const Node& node = nodes_[index];
+    const double combined = node.box.merged(box).surfaceArea();
+    const double costHere = combined;
+    const double growth = combined - node.box.surfaceArea();
+    auto descentCost = [&](int child) {
+      const Node& c = nodes_[child];
+      const double merged = c.box.merged(box).surfaceArea();
+      return growth + (c.child1 == nullNode ? merged : merged - c.box.surfaceArea());
+    };
+    const double cost1 = descentCost(node.child1);
+    const double cost2 = descentCost(node.child2);
+    if (costHere < cost1 && costHere < cost2) break;
+    index = cost1 <= cost2 ? node.child1 : node.child2;
+  }
+  return index;
+}
+
+}  // namespace physdbg
