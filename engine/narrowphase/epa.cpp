@@ -137,11 +137,12 @@ bool expand(Polytope& polytope, const SimplexVertex& vertex, int faceBudget, dou
     face.alive = false;
     for (int e = 0; e < 3; ++e) removed[removedCount++] = {face.v[e], face.v[(e + 1) % 3]};
   }
-  int horizon = 0;
+  std::array<std::pair<int, int>, kEpaFaceCapacity> horizon;
+  int horizonCount = 0;
   for (int e = 0; e < removedCount; ++e) {
     const auto reverse = std::pair{removed[e].second, removed[e].first};
     if (std::find(removed.begin(), removed.begin() + removedCount, reverse) == removed.begin() + removedCount) {
-      removed[horizon++] = removed[e];  // horizon edges are compacted in place, in order
+      horizon[horizonCount++] = removed[e];
     }
   }
   int live = 0;
@@ -149,9 +150,9 @@ bool expand(Polytope& polytope, const SimplexVertex& vertex, int faceBudget, dou
     if (polytope.faces[f].alive) polytope.faces[live++] = polytope.faces[f];
   }
   polytope.faceCount = live;
-  if (live + horizon > std::min(faceBudget, kEpaFaceCapacity) || newIndex >= kVertexCapacity) return false;
+  if (live + horizonCount > std::min(faceBudget, kEpaFaceCapacity) || newIndex >= kVertexCapacity) return false;
   polytope.vertices[polytope.vertexCount++] = vertex;
-  for (int e = 0; e < horizon; ++e) polytope.addFace(removed[e].first, removed[e].second, newIndex);
+  for (int e = 0; e < horizonCount; ++e) polytope.addFace(horizon[e].first, horizon[e].second, newIndex);
   return true;
 }
 
