@@ -1,5 +1,7 @@
 #include "engine/narrowphase/gjk.h"
 
+#include <algorithm>
+
 namespace physdbg {
 namespace {
 
@@ -20,9 +22,12 @@ bool repeats(const Simplex& simplex, const Vec3& w) {
 
 GjkResult runGjk(SupportShape& a, SupportShape& b, const NarrowPhaseOptions& options) {
   const double size = pairSize(a, b);
-  // Below this the closest point is rounding noise: treat it as contact and
-  // let EPA find a normal from the polytope instead.
-  const double overlapSquared = (1e-12 * size) * (1e-12 * size);
+  // Closer than this, the direction of the closest point is dominated by
+  // rounding (of the inputs too: positions 1e5 away carry 1e-11 of noise), so
+  // the pair counts as in contact and EPA takes the normal from the polytope.
+  // Kept below the touching tolerance so no real gap is turned into contact.
+  const double overlapDistance = std::max(1e-12 * size, std::min(1e-9 * size, 0.1 * options.touchingTolerance));
+  const double overlapSquared = overlapDistance * overlapDistance;
   GjkResult result;
   Vec3 v = a.centre() - b.centre();
   if (v.squaredNorm() <= overlapSquared) v = Vec3::UnitX();
@@ -52,6 +57,7 @@ GjkResult runGjk(SupportShape& a, SupportShape& b, const NarrowPhaseOptions& opt
     v = next;
   }
   result.distance = v.norm();
+  result.closest = v;
   result.pointA = simplex.pointA();
   result.pointB = simplex.pointB();
   return result;

@@ -11,6 +11,7 @@ struct GjkResult {
   double distance = 0.0;     // between the cores when not overlapping
   Vec3 pointA = Vec3::Zero();
   Vec3 pointB = Vec3::Zero();
+  Vec3 closest = Vec3::Zero();  // pointA - pointB, computed on the simplex
   Simplex simplex;  // last simplex, EPA's starting point
   int iterations = 0;
 };

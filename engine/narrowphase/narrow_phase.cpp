@@ -57,7 +57,7 @@ ContactResult generalPath(const Collider& a, const Transform& ta, const Collider
   double coreDistance;
   int epaIterations = 0;
   if (!gjk.overlapping) {
-    normal = (gjk.pointB - gjk.pointA) / gjk.distance;
+    normal = -gjk.closest / gjk.distance;
     coreDistance = gjk.distance;
     pointA = gjk.pointA;
     pointB = gjk.pointB;
