@@ -1,0 +1,82 @@
+#include "engine/colliders/convex_mesh_collider.h"
+
+namespace physdbg {
+namespace {
+
+constexpr int kBruteForceVertexCount = 16;
+
+// Covariance of a tetrahedron with one vertex at the origin (unit density).
+Mat3 tetrahedronCovariance(const Vec3& a, const Vec3& b, const Vec3& c) {
+  Mat3 edges;
+  edges << a, b, c;
+  Mat3 canonical;
+  canonical << 2, 1, 1, 1, 2, 1, 1, 1, 2;
+  return edges.determinant() / 120.0 * edges * canonical * edges.transpose();
+}
+
+}  // namespace
+
+ConvexMeshCollider::ConvexMeshCollider(std::vector<Vec3> points) : hull_(buildConvexHull(points)) {
+  const auto& v = hull_.vertices;
+  bounds_ = {v.front(), v.front()};
+  for (const Vec3& p : v) bounds_ = {bounds_.min.cwiseMin(p), bounds_.max.cwiseMax(p)};
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int i = 0; i < static_cast<int>(v.size()); ++i) {
+      if (v[i][axis] > v[axisExtremes_[2 * axis]][axis]) axisExtremes_[2 * axis] = i;
+      if (v[i][axis] < v[axisExtremes_[2 * axis + 1]][axis]) axisExtremes_[2 * axis + 1] = i;
+    }
+  }
+  // Mass properties from tetrahedra fanned from a point inside the hull, which
+  // keeps every term small and well conditioned.
+  Vec3 reference = Vec3::Zero();
+  for (const Vec3& p : v) reference += p / static_cast<double>(v.size());
+  Mat3 covariance = Mat3::Zero();
+  Vec3 moment = Vec3::Zero();
+  for (const auto& t : hull_.triangles) {
+    const Vec3 a = v[t[0]] - reference, b = v[t[1]] - reference, c = v[t[2]] - reference;
+    const double tetraVolume = a.dot(b.cross(c)) / 6.0;
+    volume_ += tetraVolume;
+    moment += tetraVolume * (a + b + c) / 4.0;
+    covariance += tetrahedronCovariance(a, b, c);
+  }
+  const Vec3 offset = moment / volume_;
+  centroid_ = reference + offset;
+  covariance -= volume_ * offset * offset.transpose();
+  unitInertia_ = (Mat3::Identity() * covariance.trace() - covariance) / volume_;
+}
+
+int ConvexMeshCollider::supportIndex(const Vec3& direction, int hint) const {
+  const auto& v = hull_.vertices;
+  const int count = static_cast<int>(v.size());
+  if (count <= kBruteForceVertexCount) {
+    int best = 0;
+    for (int i = 1; i < count; ++i) {
+      if (v[i].dot(direction) > v[best].dot(direction)) best = i;
+    }
+    return best;
+  }
+  if (hint < 0 || hint >= count) {
+    hint = axisExtremes_[0];
+    for (int candidate : axisExtremes_) {
+      if (v[candidate].dot(direction) > v[hint].dot(direction)) hint = candidate;
+    }
+  }
+  return climb(direction, hint);
+}
+
+int ConvexMeshCollider::climb(const Vec3& direction, int start) const {
+  const auto& v = hull_.vertices;
+  int current = start;
+  double best = v[current].dot(direction);
+  for (int previous = -1; previous != current;) {
+    previous = current;
+    for (int k = hull_.neighbourStart[previous]; k < hull_.neighbourStart[previous + 1]; ++k) {
+      const int next = hull_.neighbours[k];
+      const double value = v[next].dot(direction);
+      if (value > best) best = value, current = next;
+    }
+  }
+  return current;
+}
+
+}  // namespace physdbg

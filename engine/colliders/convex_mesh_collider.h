@@ -1,0 +1,50 @@
+#pragma once
+// Convex mesh from a point cloud. The hull is built once; support queries
+// hill-climb over hull-vertex adjacency (a linear function on a convex
+// polytope has no local maximum that is not global), starting from the best
+// of six axis-extreme vertices or from a caller's warm-start hint. Small hulls
+// are scanned by brute force, which is faster than climbing.
+//
+// The local frame is the one the points are given in; centroid() is the centre
+// of mass in that frame and unitInertia() is taken about the centroid.
+#include <array>
+#include <vector>
+
+#include "engine/colliders/collider.h"
+#include "engine/colliders/convex_hull.h"
+
+namespace physdbg {
+
+class ConvexMeshCollider final : public Collider {
+ public:
+  // Throws std::invalid_argument for < 4 distinct points, a flat cloud or
+  // non-finite values.
+  explicit ConvexMeshCollider(std::vector<Vec3> points);
+
+  const std::vector<Vec3>& hullVertices() const { return hull_.vertices; }
+  const std::vector<HullFace>& hullFaces() const { return hull_.faces; }
+  const std::vector<std::array<int, 3>>& hullTriangles() const { return hull_.triangles; }
+  const Vec3& centroid() const { return centroid_; }
+
+  // Index of the support vertex; `hint` is the vertex to start climbing from
+  // (any value is accepted; out-of-range hints start from the axis extremes).
+  int supportIndex(const Vec3& direction, int hint = -1) const;
+
+  ColliderKind kind() const override { return ColliderKind::ConvexMesh; }
+  Vec3 localSupport(const Vec3& direction) const override { return hull_.vertices[supportIndex(direction)]; }
+  Aabb localBounds() const override { return bounds_; }
+  double volume() const override { return volume_; }
+  Mat3 unitInertia() const override { return unitInertia_; }
+
+ private:
+  int climb(const Vec3& direction, int start) const;
+
+  ConvexHull hull_;
+  std::array<int, 6> axisExtremes_{};
+  Aabb bounds_;
+  Vec3 centroid_ = Vec3::Zero();
+  double volume_ = 0.0;
+  Mat3 unitInertia_ = Mat3::Zero();
+};
+
+}  // namespace physdbg

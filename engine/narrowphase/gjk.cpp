@@ -1,0 +1,66 @@
+#include "engine/narrowphase/gjk.h"
+
+#include <algorithm>
+
+namespace physdbg {
+namespace {
+
+SimplexVertex supportOfDifference(SupportShape& a, SupportShape& b, const Vec3& direction) {
+  const Vec3 pa = a.support(direction);
+  const Vec3 pb = b.support(-direction);
+  return {pa - pb, pa, pb};
+}
+
+bool repeats(const Simplex& simplex, const Vec3& w) {
+  for (int i = 0; i < simplex.size; ++i) {
+    if (simplex.vertices[i].w == w) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+GjkResult runGjk(SupportShape& a, SupportShape& b, const NarrowPhaseOptions& options) {
+  const double size = pairSize(a, b);
+  // Closer than this, the direction of the closest point is dominated by
+  // rounding (of the inputs too: positions 1e5 away carry 1e-11 of noise), so
+  // the pair counts as in contact and EPA takes the normal from the polytope.
+  // Kept below the touching tolerance so no real gap is turned into contact.
+  const double overlapDistance = std::max(1e-12 * size, std::min(1e-9 * size, 0.1 * options.touchingTolerance));
+  const double overlapSquared = overlapDistance * overlapDistance;
+  GjkResult result;
+  Vec3 v = a.centre() - b.centre();
+  if (v.squaredNorm() <= overlapSquared) v = Vec3::UnitX();
+  Simplex& simplex = result.simplex;
+  while (result.iterations < options.maxGjkIterations) {
+    ++result.iterations;
+    const SimplexVertex vertex = supportOfDifference(a, b, -v);
+    if (simplex.size > 0) {
+      const double gain = v.squaredNorm() - v.dot(vertex.w);
+      if (repeats(simplex, vertex.w) || gain <= options.relativeTolerance * v.squaredNorm()) break;
+    }
+    const Simplex previous = simplex;
+    simplex.push(vertex);
+    if (reduceToClosest(simplex, kFlatTolerance)) {
+      result.overlapping = true;
+      return result;
+    }
+    const Vec3 next = simplex.closestPoint();
+    if (next.squaredNorm() <= overlapSquared) {
+      result.overlapping = true;
+      return result;
+    }
+    if (previous.size > 0 && next.squaredNorm() >= v.squaredNorm()) {  // no progress: keep the better one
+      simplex = previous;
+      break;
+    }
+    v = next;
+  }
+  result.distance = v.norm();
+  result.closest = v;
+  result.pointA = simplex.pointA();
+  result.pointB = simplex.pointB();
+  return result;
+}
+
+}  // namespace physdbg

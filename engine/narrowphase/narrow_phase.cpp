@@ -1,0 +1,93 @@
+#include "engine/narrowphase/narrow_phase.h"
+
+#include <stdexcept>
+
+#include "engine/narrowphase/analytic_contacts.h"
+#include "engine/narrowphase/epa.h"
+#include "engine/narrowphase/gjk.h"
+
+namespace physdbg {
+namespace {
+
+void validate(const Transform& ta, const Transform& tb, const NarrowPhaseOptions& options) {
+  if (!isFinite(ta.position) || !isFinite(ta.rotation) || !isFinite(tb.position) || !isFinite(tb.rotation)) {
+    throw std::invalid_argument("collide: transforms must be finite");
+  }
+  if (ta.rotation.squaredNorm() == 0.0 || tb.rotation.squaredNorm() == 0.0) {
+    throw std::invalid_argument("collide: rotation quaternion must be non-zero");
+  }
+  if (!(options.touchingTolerance >= 0.0) || !(options.relativeTolerance >= 0.0) || options.maxGjkIterations < 1 ||
+      options.maxEpaFaces < 4) {
+    throw std::invalid_argument("collide: tolerances must be >= 0, maxGjkIterations >= 1 and maxEpaFaces >= 4");
+  }
+}
+
+bool tryFastPath(const Collider& a, const Transform& ta, const Collider& b, const Transform& tb, double tolerance,
+                 ContactResult& result) {
+  const auto kindA = a.kind(), kindB = b.kind();
+  if (kindA == ColliderKind::Sphere && kindB == ColliderKind::Sphere) {
+    result = collideSpheres(static_cast<const SphereCollider&>(a), ta.position, static_cast<const SphereCollider&>(b),
+                            tb.position, tolerance);
+    return true;
+  }
+  if (kindA == ColliderKind::Box && kindB == ColliderKind::Sphere) {
+    result = collideBoxSphere(static_cast<const BoxCollider&>(a), ta, static_cast<const SphereCollider&>(b), tb.position,
+                              tolerance);
+    return true;
+  }
+  if (kindA == ColliderKind::Sphere && kindB == ColliderKind::Box) {
+    result = swapped(collideBoxSphere(static_cast<const BoxCollider&>(b), tb, static_cast<const SphereCollider&>(a),
+                                      ta.position, tolerance));
+    return true;
+  }
+  return false;
+}
+
+// GJK/EPA in A's local frame; margins (sphere and capsule radii) are added
+// along the core normal afterwards.
+ContactResult generalPath(const Collider& a, const Transform& ta, const Collider& b, const Transform& tb,
+                          const NarrowPhaseOptions& options) {
+  const Transform normalisedA{ta.position, ta.rotation.normalized()};
+  const Mat3 rotationA = normalisedA.rotation.toRotationMatrix();
+  const Mat3 rotationB = rotationA.transpose() * tb.rotation.normalized().toRotationMatrix();
+  SupportShape shapeA(a, Mat3::Identity(), Vec3::Zero());
+  SupportShape shapeB(b, rotationB, rotationA.transpose() * (tb.position - ta.position));
+  const GjkResult gjk = runGjk(shapeA, shapeB, options);
+  Vec3 normal, pointA, pointB;
+  double coreDistance;
+  int epaIterations = 0;
+  if (!gjk.overlapping) {
+    normal = -gjk.closest / gjk.distance;
+    coreDistance = gjk.distance;
+    pointA = gjk.pointA;
+    pointB = gjk.pointB;
+  } else {
+    const EpaResult epa = runEpa(gjk.simplex, shapeA, shapeB, options);
+    normal = epa.normal;
+    coreDistance = -epa.depth;
+    pointA = epa.pointA;
+    pointB = epa.pointB;
+    epaIterations = epa.iterations;
+  }
+  pointA += shapeA.margin() * normal;
+  pointB -= shapeB.margin() * normal;
+  ContactResult result = classifyContact(coreDistance - shapeA.margin() - shapeB.margin(), rotationA * normal,
+                                         normalisedA.apply(pointA), normalisedA.apply(pointB),
+                                         options.touchingTolerance);
+  result.gjkIterations = gjk.iterations;
+  result.epaIterations = epaIterations;
+  result.usedGeneralPath = true;
+  return result;
+}
+
+}  // namespace
+
+ContactResult collide(const Collider& a, const Transform& ta, const Collider& b, const Transform& tb,
+                      const NarrowPhaseOptions& options) {
+  validate(ta, tb, options);
+  ContactResult result;
+  if (options.analyticFastPaths && tryFastPath(a, ta, b, tb, options.touchingTolerance, result)) return result;
+  return generalPath(a, ta, b, tb, options);
+}
+
+}  // namespace physdbg

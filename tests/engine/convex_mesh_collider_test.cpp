@@ -1,0 +1,91 @@
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "engine/colliders/box_collider.h"
+#include "engine/colliders/convex_mesh_collider.h"
+
+namespace physdbg {
+namespace {
+
+std::vector<Vec3> cubeCorners(const Vec3& half, const Vec3& offset = Vec3::Zero()) {
+  std::vector<Vec3> points;
+  for (int i = 0; i < 8; ++i) {
+    points.push_back(offset + Vec3(i & 1 ? half.x() : -half.x(), i & 2 ? half.y() : -half.y(), i & 4 ? half.z() : -half.z()));
+  }
+  return points;
+}
+
+TEST(ConvexMeshCollider, CubeWithDuplicatesAndCoplanarPointsHasSixQuads) {
+  std::vector<Vec3> points = cubeCorners(Vec3(1, 1, 1));
+  points.push_back(points[3]);              // duplicate
+  points.emplace_back(0, 0, 0);             // interior
+  points.emplace_back(1, 0.3, -0.2);        // on a face
+  points.emplace_back(1, 1, 0);             // on an edge
+  points.insert(points.begin(), Vec3(-1, 0.5, 0.5));  // on a face before the corners
+  ConvexMeshCollider mesh(points);
+  EXPECT_EQ(mesh.hullFaces().size(), 6u);
+  for (const HullFace& face : mesh.hullFaces()) {
+    EXPECT_NEAR(face.normal.cwiseAbs().maxCoeff(), 1.0, 1e-12);
+    EXPECT_NEAR(face.offset, 1.0, 1e-12);
+    for (int v : face.vertices) EXPECT_NEAR(face.normal.dot(mesh.hullVertices()[v]), 1.0, 1e-12);
+  }
+  EXPECT_NEAR(mesh.volume(), 8.0, 1e-12);
+  EXPECT_LE(mesh.centroid().norm(), 1e-12);
+}
+
+TEST(ConvexMeshCollider, MassPropertiesMatchTheBoxAboutTheCentroid) {
+  const Vec3 half(0.5, 1.0, 1.5), offset(3, -2, 7);
+  ConvexMeshCollider mesh(cubeCorners(half, offset));
+  BoxCollider box(half);
+  EXPECT_NEAR(mesh.volume(), box.volume(), 1e-12);
+  EXPECT_LE((mesh.centroid() - offset).norm(), 1e-12);
+  EXPECT_LE((mesh.unitInertia() - box.unitInertia()).norm(), 1e-12);
+  EXPECT_LE((mesh.localBounds().min - (offset - half)).norm(), 0.0);
+}
+
+TEST(ConvexMeshCollider, HillClimbingSupportMatchesBruteForce) {
+  std::mt19937 rng(17);
+  std::normal_distribution<double> gaussian(0.0, 1.0);
+  std::vector<Vec3> sphereCloud;
+  for (int i = 0; i < 256; ++i) sphereCloud.push_back(Vec3(gaussian(rng), gaussian(rng), gaussian(rng)).normalized());
+  ConvexMeshCollider mesh(sphereCloud);
+  EXPECT_GT(mesh.hullVertices().size(), 200u);
+  int hint = -1;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 direction(gaussian(rng), gaussian(rng), gaussian(rng));
+    double best = -1e300;
+    for (const Vec3& p : sphereCloud) best = std::max(best, p.dot(direction));
+    EXPECT_NEAR(mesh.localSupport(direction).dot(direction), best, 1e-12);
+    hint = mesh.supportIndex(direction, hint);
+    EXPECT_NEAR(mesh.hullVertices()[hint].dot(direction), best, 1e-12);
+  }
+}
+
+TEST(ConvexMeshCollider, TrianglesCoverTheSurfaceOutward) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<Vec3> cloud;
+  for (int i = 0; i < 60; ++i) cloud.emplace_back(unit(rng), unit(rng), unit(rng));
+  ConvexMeshCollider mesh(cloud);
+  const auto& v = mesh.hullVertices();
+  // Euler: V - E + F = 2 for a closed triangulated sphere, E = 3F/2.
+  EXPECT_EQ(static_cast<int>(v.size()) - static_cast<int>(mesh.hullTriangles().size()) / 2, 2);
+  for (const auto& t : mesh.hullTriangles()) {
+    const Vec3 normal = (v[t[1]] - v[t[0]]).cross(v[t[2]] - v[t[0]]);
+    for (const Vec3& p : cloud) EXPECT_LE(normal.normalized().dot(p - v[t[0]]), 1e-9);
+  }
+}
+
+TEST(ConvexMeshCollider, BadCloudsThrow) {
+  EXPECT_THROW(ConvexMeshCollider({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}), std::invalid_argument);
+  EXPECT_THROW(ConvexMeshCollider({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 1, 0), Vec3(1, 0, 0)}),
+               std::invalid_argument);
+  EXPECT_THROW(ConvexMeshCollider({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)}), std::invalid_argument);
+  EXPECT_THROW(ConvexMeshCollider({Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 2, 2), Vec3(3, 3, 3)}), std::invalid_argument);
+  EXPECT_THROW(ConvexMeshCollider({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, NAN)}), std::invalid_argument);
+  EXPECT_NO_THROW(ConvexMeshCollider({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}));
+}
+
+}  // namespace
+}  // namespace physdbg
