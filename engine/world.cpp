@@ -3,50 +3,202 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace physdbg {
+#include "engine/broadphase/brute_force_broad_phase.h"
+#include "engine/broadphase/tree_broad_phase.h"
+#include "engine/narrowphase/narrow_phase.h"
 
-World::World(const WorldSettings& settings) : settings_(settings) {
+namespace physdbg {
+namespace {
+
+std::unique_ptr<BroadPhase> makeBroadPhase(const WorldSettings& settings) {
+  if (settings.broadPhase == BroadPhaseKind::BruteForce) {
+    BruteForceOptions options;
+    options.margin = settings.fatMargin;
+    options.checkBothOrders = settings.bruteForceBothOrders;
+    return std::make_unique<BruteForceBroadPhase>(options);
+  }
+  DynamicAabbTreeOptions options;
+  options.margin = settings.fatMargin;
+  return std::make_unique<TreeBroadPhase>(options);
+}
+
+}  // namespace
+
+World::World(const WorldSettings& settings) : settings_(settings), broadPhase_(makeBroadPhase(settings)) {
   if (!(settings.dt > 0.0) || !std::isfinite(settings.dt)) throw std::invalid_argument("dt must be positive");
   if (!isFinite(settings.gravity)) throw std::invalid_argument("gravity must be finite");
+  if (!(settings.fatMargin >= 0.0)) throw std::invalid_argument("fat margin must not be negative");
 }
+
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
 
 BodyId World::addBody(const BodyDefinition& definition) {
   bodies_.emplace_back(definition);
+  const auto id = static_cast<BodyId>(bodies_.size() - 1);
+  const RigidBody& body = bodies_.back();
+  proxies_.push_back(broadPhase_->addProxy(body.collider().worldBounds(body.transform()), id,
+                                           body.isStatic() ? ProxyMotion::Static : ProxyMotion::Dynamic));
   frozen_.push_back(false);
-  return static_cast<BodyId>(bodies_.size() - 1);
+  asleep_.push_back(false);
+  touching_.push_back(false);
+  slowTime_.push_back(0.0);
+  return id;
 }
 
+const DynamicAabbTree* World::tree() const {
+  const auto* tree = dynamic_cast<const TreeBroadPhase*>(broadPhase_.get());
+  return tree ? &tree->tree() : nullptr;
+}
+
+// The order of a step, as the design describes it.
 void World::step() {
   stats_ = StepStats{};
-  integrateVelocities();
+  integrateVelocities();  // gravity, user forces, drag, gyroscopic term
+  freezeNonFiniteBodies();
+  updateBroadPhase();     // fat boxes follow the bodies that moved
+  findContacts();         // candidate pairs, then the narrow phase on each
+  wakeTouchedBodies();
+  resolveContacts();      // every response after every test is done
   integratePositions();
+  events_.update(contacts_, listener_);
+  updateSleep();
   freezeNonFiniteBodies();
   ++stepCount_;
 }
 
-void World::integrateVelocities() {
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (frozen_[i] || bodies_[i].isStatic()) continue;
-    bodies_[i].integrateVelocity(settings_.dt, settings_.gravity);
-    ++stats_.integratedBodies;
-  }
+void World::wake(BodyId id) {
+  if (!asleep_.at(id)) return;
+  asleep_[id] = false;
+  slowTime_[id] = 0.0;
+  if (proxies_[id] >= 0) broadPhase_->setProxyActive(proxies_[id], true);
 }
 
-void World::integratePositions() {
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (frozen_[i] || bodies_[i].isStatic()) continue;
-    bodies_[i].integratePosition(settings_.dt);
+void World::putToSleep(BodyId id) {
+  asleep_[id] = true;
+  bodies_[id].setLinearVelocity(Vec3::Zero());
+  bodies_[id].setAngularVelocity(Vec3::Zero());
+  broadPhase_->setProxyActive(proxies_[id], false);
+}
+
+void World::integrateVelocities() {
+  for (BodyId id = 0; id < bodies_.size(); ++id) {
+    RigidBody& body = bodies_[id];
+    if (frozen_[id] || body.isStatic()) continue;
+    // A sleeping body that was pushed or given a velocity wakes up.
+    if (asleep_[id] && (body.hasPendingForces() || body.linearVelocity() != Vec3::Zero() ||
+                        body.angularVelocity() != Vec3::Zero()))
+      wake(id);
+    if (asleep_[id]) {
+      ++stats_.sleepingBodies;
+      continue;
+    }
+    body.integrateVelocity(settings_.dt, settings_.gravity);
     ++stats_.awakeBodies;
   }
 }
 
-// A non-finite body is reported with the step it happened on, then frozen:
-// it takes no further part in the simulation, so it cannot poison the others.
+void World::updateBroadPhase() {
+  for (BodyId id = 0; id < bodies_.size(); ++id) {
+    if (!isMoving(id)) continue;
+    const RigidBody& body = bodies_[id];
+    broadPhase_->moveProxy(proxies_[id], body.collider().worldBounds(body.transform()),
+                           body.linearVelocity() * settings_.dt);
+  }
+}
+
+void World::findContacts() {
+  broadPhase_->findPairs(pairs_);
+  stats_.broadPhase = broadPhase_->stats();
+  stats_.candidatePairs = static_cast<int>(pairs_.size());
+  contacts_.clear();
+  std::fill(touching_.begin(), touching_.end(), false);
+  for (const BodyPair& pair : pairs_) {
+    const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
+    const ContactResult result =
+        collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase);
+    stats_.narrowPhase.add(result);
+    if (result.status == ContactStatus::Separated) continue;
+    contacts_.push_back({pair.a, pair.b, result});
+    touching_[pair.a] = touching_[pair.b] = true;
+  }
+  if (!settings_.skipStaticPairs) testStaticPairs();
+  stats_.contacts = static_cast<int>(contacts_.size());
+}
+
+// The design's baseline without static-pair skipping: pairs of bodies that
+// cannot move still cost an overlap test and, when their boxes overlap, a
+// narrow-phase test whose answer nobody uses.
+void World::testStaticPairs() {
+  for (BodyId i = 0; i < bodies_.size(); ++i) {
+    if (!bodies_[i].isStatic()) continue;
+    const Aabb boxI = bodies_[i].collider().worldBounds(bodies_[i].transform());
+    for (BodyId j = i + 1; j < bodies_.size(); ++j) {
+      if (!bodies_[j].isStatic()) continue;
+      ++stats_.staticPairsTested;
+      if (!boxI.overlaps(bodies_[j].collider().worldBounds(bodies_[j].transform()))) continue;
+      stats_.narrowPhase.add(collide(bodies_[i].collider(), bodies_[i].transform(), bodies_[j].collider(),
+                                     bodies_[j].transform(), settings_.narrowPhase));
+    }
+  }
+}
+
+// A sleeping body touched by an awake one wakes before the response, so the
+// response sees it as the dynamic body it is.
+void World::wakeTouchedBodies() {
+  for (const Contact& contact : contacts_) {
+    if (asleep_[contact.a] && isMoving(contact.b)) wake(contact.a);
+    if (asleep_[contact.b] && isMoving(contact.a)) wake(contact.b);
+  }
+}
+
+void World::resolveContacts() {
+  for (const Contact& contact : contacts_) {
+    if (frozen_[contact.a] || frozen_[contact.b]) continue;
+    if (respondToContact(bodies_[contact.a], bodies_[contact.b], contact.result, settings_.response))
+      ++stats_.responses;
+  }
+}
+
+void World::integratePositions() {
+  for (BodyId id = 0; id < bodies_.size(); ++id) {
+    if (isMoving(id)) bodies_[id].integratePosition(settings_.dt);
+  }
+}
+
+// A body sleeps when it and every awake body it touches have been slow for
+// timeToSleep, so a resting pile falls asleep together.
+void World::updateSleep() {
+  for (BodyId id = 0; id < bodies_.size(); ++id) {
+    if (!isMoving(id)) continue;
+    const RigidBody& body = bodies_[id];
+    const bool slow = body.linearVelocity().norm() < settings_.sleepLinearSpeed &&
+                      body.angularVelocity().norm() < settings_.sleepAngularSpeed;
+    slowTime_[id] = slow ? slowTime_[id] + settings_.dt : 0.0;
+  }
+  if (!settings_.allowSleep) return;
+  std::vector<bool> ready(bodies_.size(), false);
+  for (BodyId id = 0; id < bodies_.size(); ++id) ready[id] = isMoving(id) && slowTime_[id] >= settings_.timeToSleep;
+  for (const Contact& contact : contacts_) {
+    if (isMoving(contact.a) && isMoving(contact.b) && !(ready[contact.a] && ready[contact.b])) {
+      ready[contact.a] = ready[contact.b] = false;
+    }
+  }
+  for (BodyId id = 0; id < bodies_.size(); ++id) {
+    if (ready[id]) putToSleep(id);
+  }
+}
+
+// A non-finite body is reported with the step it happened on, then frozen and
+// taken out of the broad phase: it cannot poison the tree or other bodies.
 void World::freezeNonFiniteBodies() {
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (frozen_[i] || bodies_[i].hasFiniteState()) continue;
-    frozen_[i] = true;
-    faults_.push_back({static_cast<BodyId>(i), stepCount_ + 1, "position, orientation or velocity became NaN or Inf"});
+  for (BodyId id = 0; id < bodies_.size(); ++id) {
+    if (frozen_[id] || bodies_[id].hasFiniteState()) continue;
+    frozen_[id] = true;
+    if (proxies_[id] >= 0) broadPhase_->removeProxy(proxies_[id]);
+    proxies_[id] = -1;
+    faults_.push_back({id, stepCount_ + 1, "position, orientation or velocity became NaN or Inf"});
   }
 }
 

@@ -1,21 +1,45 @@
 #pragma once
 // The world owns the bodies and advances them. World::step() is the one place
-// that shows the order of a step; each stage lives in its own file.
+// that shows the order of a step; each stage lives in its own small function
+// or file (broadphase/, narrowphase/, collision_response, contact_events).
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "debugdraw/primitives.h"
+#include "engine/broadphase/broad_phase.h"
+#include "engine/collision_response.h"
+#include "engine/contact_events.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/math.h"
+#include "engine/narrowphase/contact.h"
 
 namespace physdbg {
 
 using BodyId = std::uint32_t;
+class DynamicAabbTree;
+
+enum class BroadPhaseKind { Tree, BruteForce };
 
 struct WorldSettings {
   Vec3 gravity{0.0, -9.81, 0.0};
   double dt = 1.0 / 60.0;
+
+  BroadPhaseKind broadPhase = BroadPhaseKind::Tree;
+  double fatMargin = 0.1;               // m added around each tight box
+  bool bruteForceBothOrders = false;    // the design's baseline: test A-B and B-A
+  // The design skips pairs of bodies that cannot move (static-static). Off
+  // reproduces its slower baseline: those pairs go through the narrow phase too.
+  bool skipStaticPairs = true;
+
+  bool allowSleep = true;
+  double sleepLinearSpeed = 0.05;   // m/s
+  double sleepAngularSpeed = 0.05;  // rad/s
+  double timeToSleep = 0.5;         // s below both speeds before sleeping
+
+  ResponseSettings response;
+  NarrowPhaseOptions narrowPhase;
 };
 
 // A body whose state stopped being finite: reported once, then frozen.
@@ -28,12 +52,21 @@ struct NumericalFault {
 // Work done by the last step, for reports and overlays: counters, not claims.
 struct StepStats {
   int awakeBodies = 0;
-  int integratedBodies = 0;
+  int sleepingBodies = 0;
+  int candidatePairs = 0;
+  int staticPairsTested = 0;
+  int contacts = 0;
+  int responses = 0;
+  NarrowPhaseCounters narrowPhase;
+  BroadPhaseStats broadPhase;
 };
 
 class World {
  public:
   explicit World(const WorldSettings& settings = {});
+  ~World();
+  World(World&&) noexcept;
+  World& operator=(World&&) noexcept;
 
   // Throws std::invalid_argument (see RigidBody) for a bad definition.
   BodyId addBody(const BodyDefinition& definition);
@@ -49,9 +82,18 @@ class World {
 
   void step();
 
+  // Not owned; may be null. Receives begin/stay/end after each step.
+  void setContactListener(ContactListener* listener) { listener_ = listener; }
+
+  bool isAsleep(BodyId id) const { return asleep_.at(id); }
+  void wake(BodyId id);
   bool isFrozen(BodyId id) const { return frozen_.at(id); }
   const std::vector<NumericalFault>& numericalFaults() const { return faults_; }
   const StepStats& lastStepStats() const { return stats_; }
+  const std::vector<Contact>& contacts() const { return contacts_; }
+  const std::vector<BodyPair>& candidatePairs() const { return pairs_; }
+  // The broad-phase tree, or null when the brute-force broad phase is used.
+  const DynamicAabbTree* tree() const;
 
   // Appends the primitives of the requested layers; computes nothing for the
   // layers that are not requested.
@@ -59,12 +101,28 @@ class World {
 
  private:
   void integrateVelocities();
+  void updateBroadPhase();
+  void findContacts();
+  void testStaticPairs();
+  void wakeTouchedBodies();
+  void resolveContacts();
   void integratePositions();
+  void updateSleep();
   void freezeNonFiniteBodies();
+  void putToSleep(BodyId id);
+  std::vector<std::shared_ptr<const debugdraw::TriangleMesh>> hullMeshes() const;
+  bool isMoving(BodyId id) const { return !bodies_[id].isStatic() && !asleep_[id] && !frozen_[id]; }
 
   WorldSettings settings_;
   std::vector<RigidBody> bodies_;
-  std::vector<bool> frozen_;
+  std::vector<int> proxies_;  // broad-phase proxy per body, -1 once frozen
+  std::vector<bool> frozen_, asleep_, touching_;
+  std::vector<double> slowTime_;  // seconds spent below the sleep speeds
+  std::unique_ptr<BroadPhase> broadPhase_;
+  std::vector<BodyPair> pairs_;
+  std::vector<Contact> contacts_;
+  ContactEventTracker events_;
+  ContactListener* listener_ = nullptr;
   std::vector<NumericalFault> faults_;
   StepStats stats_;
   int stepCount_ = 0;

@@ -2,7 +2,12 @@
 // Only the requested layers are computed.
 #include <cmath>
 
+#include <algorithm>
+
+#include "engine/broadphase/dynamic_aabb_tree.h"
 #include "engine/colliders/box_collider.h"
+#include "engine/colliders/capsule_collider.h"
+#include "engine/colliders/convex_mesh_collider.h"
 #include "engine/colliders/sphere_collider.h"
 #include "engine/world.h"
 
@@ -31,7 +36,17 @@ dd::Color bodyColor(std::size_t index) {
   return {static_cast<float>(r), static_cast<float>(g), static_cast<float>(b), 1.0f};
 }
 
-void emitShape(const RigidBody& body, dd::Color color, dd::Frame& frame) {
+std::shared_ptr<const dd::TriangleMesh> hullMesh(const ConvexMeshCollider& hull, std::uint64_t id) {
+  auto mesh = std::make_shared<dd::TriangleMesh>();
+  mesh->id = id;
+  for (const Vec3& vertex : hull.hullVertices()) mesh->vertices.push_back(vertex.cast<float>());
+  for (const auto& triangle : hull.hullTriangles())
+    for (int corner : triangle) mesh->indices.push_back(static_cast<std::uint32_t>(corner));
+  return mesh;
+}
+
+void emitShape(const RigidBody& body, dd::Color color, const std::shared_ptr<const dd::TriangleMesh>& mesh,
+               dd::Frame& frame) {
   const Collider& collider = body.collider();
   switch (collider.kind()) {
     case ColliderKind::Sphere:
@@ -42,12 +57,14 @@ void emitShape(const RigidBody& body, dd::Color color, dd::Frame& frame) {
       frame.boxes.push_back({body.position(), body.orientation(),
                              static_cast<const BoxCollider&>(collider).halfExtents(), color});
       break;
-    default: {
-      // Shapes without a dedicated primitive are drawn as their local box.
-      const Aabb local = collider.localBounds();
-      frame.boxes.push_back({body.transform().apply(local.center()), body.orientation(), local.halfExtents(), color});
+    case ColliderKind::Capsule: {
+      const auto& capsule = static_cast<const CapsuleCollider&>(collider);
+      frame.capsules.push_back({body.position(), body.orientation(), capsule.radius(), capsule.halfHeight(), color});
       break;
     }
+    case ColliderKind::ConvexMesh:
+      if (mesh) frame.meshes.push_back({body.position(), body.orientation(), mesh, color});
+      break;
   }
 }
 
@@ -57,20 +74,83 @@ void emitWire(const RigidBody& body, dd::Frame& frame) {
                              {0.95f, 0.95f, 0.95f, 1.0f}});
 }
 
+dd::Color shade(dd::Color color, float factor) {
+  return {color.r * factor, color.g * factor, color.b * factor, color.a};
+}
+
+// Internal tree nodes in blue, lighter with depth so levels can be told apart.
+void emitTree(const DynamicAabbTree& tree, dd::Frame& frame) {
+  tree.forEachNode([&](const Aabb& box, int depth, bool isLeaf) {
+    if (isLeaf) return;
+    const float lift = std::min(0.6f, 0.08f * static_cast<float>(depth));
+    const dd::Color color{dd::colors::treeNode.r + lift, dd::colors::treeNode.g + lift, 1.0f, 1.0f};
+    frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), color});
+  });
+}
+
+void emitContacts(const std::vector<Contact>& contacts, double scale, dd::Frame& frame) {
+  for (const Contact& contact : contacts) {
+    const ContactResult& result = contact.result;
+    const Vec3 point = 0.5 * (result.pointA + result.pointB);
+    frame.points.push_back({point, 7.0f, dd::colors::contactPoint});
+    const double length = scale * (0.25 + 4.0 * result.depth);
+    frame.arrows.push_back({point, point + result.normal * length, dd::colors::contactNormal});
+  }
+}
+
 }  // namespace
 
 void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame) const {
   if (layers.empty()) return;
+  std::vector<std::shared_ptr<const dd::TriangleMesh>> meshes;
+  if (layers.has(dd::Layer::Shapes)) meshes = hullMeshes();
+  double typicalSize = 0;
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     const RigidBody& body = bodies_[i];
     if (!body.hasFiniteState()) continue;
-    if (layers.has(dd::Layer::Shapes)) emitShape(body, body.isStatic() ? dd::colors::staticBody : bodyColor(i), frame);
-    if (layers.has(dd::Layer::Wire)) emitWire(body, frame);
-    if (layers.has(dd::Layer::Aabbs)) {
-      const Aabb box = body.collider().worldBounds(body.transform());
-      frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), dd::colors::tightBox});
+    const Aabb box = body.collider().worldBounds(body.transform());
+    if (!body.isStatic()) typicalSize = std::max(typicalSize, box.halfExtents().maxCoeff());
+    if (layers.has(dd::Layer::Shapes)) {
+      dd::Color color = body.isStatic() ? dd::colors::staticBody : bodyColor(i);
+      if (layers.has(dd::Layer::Sleep) && asleep_[i]) color = shade(color, 0.35f);
+      emitShape(body, color, meshes[i], frame);
     }
+    if (layers.has(dd::Layer::Wire)) emitWire(body, frame);
+    if (layers.has(dd::Layer::Aabbs))
+      frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(),
+                                 touching_[i] ? dd::colors::colliding : dd::colors::tightBox});
+    if (layers.has(dd::Layer::Fat) && proxies_[i] >= 0) {
+      const Aabb& fat = broadPhase_->fatBox(proxies_[i]);
+      frame.wireBoxes.push_back({fat.center(), Quat::Identity(), fat.halfExtents(), dd::colors::fatBox});
+    }
+    if (layers.has(dd::Layer::Velocities) && !body.isStatic() && body.linearVelocity() != Vec3::Zero())
+      frame.arrows.push_back({body.position(), body.position() + body.linearVelocity() * 0.1, {0.3f, 0.9f, 1.0f, 1}});
+    if (layers.has(dd::Layer::Sleep) && !layers.has(dd::Layer::Shapes) && asleep_[i])
+      frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), {0.5f, 0.3f, 0.7f, 1}});
   }
+  if (layers.has(dd::Layer::Tree)) {
+    if (const DynamicAabbTree* broadPhaseTree = tree()) emitTree(*broadPhaseTree, frame);
+  }
+  if (layers.has(dd::Layer::Contacts)) emitContacts(contacts_, std::max(typicalSize, 0.2), frame);
+  if (layers.has(dd::Layer::Pairs)) {
+    for (const BodyPair& pair : pairs_)
+      frame.lines.push_back({bodies_[pair.a].position(), bodies_[pair.b].position(), {0.9f, 0.5f, 0.9f, 1}});
+  }
+}
+
+// One drawing mesh per convex collider, shared by the bodies that share it;
+// ids follow body order so they are the same run after run.
+std::vector<std::shared_ptr<const dd::TriangleMesh>> World::hullMeshes() const {
+  std::vector<std::shared_ptr<const dd::TriangleMesh>> meshes(bodies_.size());
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const Collider* collider = &bodies_[i].collider();
+    if (collider->kind() != ColliderKind::ConvexMesh) continue;
+    for (std::size_t j = 0; j < i && !meshes[i]; ++j) {
+      if (&bodies_[j].collider() == collider) meshes[i] = meshes[j];
+    }
+    if (!meshes[i]) meshes[i] = hullMesh(static_cast<const ConvexMeshCollider&>(*collider), i + 1);
+  }
+  return meshes;
 }
 
 }  // namespace physdbg

@@ -172,11 +172,26 @@ void RigidBody::integratePosition(double dt) {
   spinAfterGyroscopicStep_.setZero();
 }
 
+void RigidBody::translate(const Vec3& delta) {
+  if (isStatic_) return;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!lockTranslation_[axis]) position_[axis] += delta[axis];
+  }
+}
+
 void RigidBody::applyLocks() {
   for (int axis = 0; axis < 3; ++axis) {
     if (lockTranslation_[axis]) linearVelocity_[axis] = 0.0;
     if (lockRotation_[axis]) angularVelocity_[axis] = 0.0;
   }
+}
+
+bool RigidBody::hasPendingForces() const {
+  for (const Vec3* accumulator : {&forceAccumulator_, &accelerationAccumulator_, &velocityChange_, &torqueAccumulator_,
+                                  &angularAccelerationAccumulator_, &angularMomentumChange_, &angularVelocityChange_}) {
+    if (*accumulator != Vec3::Zero()) return true;
+  }
+  return false;
 }
 
 double RigidBody::kineticEnergy() const {

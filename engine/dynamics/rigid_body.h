@@ -50,6 +50,8 @@ class RigidBody {
   Transform transform() const { return {position_, orientation_}; }
 
   void setPosition(const Vec3& position) { position_ = position; }
+  // Moves the body by `delta` except along locked translation axes.
+  void translate(const Vec3& delta);
   void setOrientation(const Quat& orientation) { orientation_ = orientation.normalized(); }
   void setLinearVelocity(const Vec3& velocity) { linearVelocity_ = velocity; }
   void setAngularVelocity(const Vec3& velocity) { angularVelocity_ = velocity; }
@@ -86,6 +88,7 @@ class RigidBody {
   // coordinate keeps its exact initial value.
   void applyLocks();
 
+  bool hasPendingForces() const;
   double kineticEnergy() const;
   Vec3 angularMomentum() const;  // world frame, about the centre of mass
   bool hasFiniteState() const;

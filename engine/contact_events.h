@@ -1,0 +1,35 @@
+#pragma once
+// Contact begin / stay / end per pair, the design's OnColliderEnter/Exit.
+// A pair "touches" on a step when the narrow phase reports it touching or
+// penetrating. Events are delivered in pair order, so they are deterministic.
+#include <vector>
+
+#include "engine/broadphase/broad_phase.h"
+#include "engine/narrowphase/contact.h"
+
+namespace physdbg {
+
+struct Contact {
+  std::uint32_t a = 0, b = 0;  // body ids, a < b
+  ContactResult result;
+};
+
+class ContactListener {
+ public:
+  virtual ~ContactListener() = default;
+  virtual void onContactBegin(const Contact& contact) = 0;
+  virtual void onContactStay(const Contact& contact) = 0;
+  virtual void onContactEnd(std::uint32_t a, std::uint32_t b) = 0;
+};
+
+// Compares this step's touching pairs (sorted) with the previous step's.
+class ContactEventTracker {
+ public:
+  void update(const std::vector<Contact>& contacts, ContactListener* listener);
+  const std::vector<BodyPair>& touchingPairs() const { return touching_; }
+
+ private:
+  std::vector<BodyPair> touching_;
+};
+
+}  // namespace physdbg
