@@ -41,17 +41,33 @@ class TraceWriter {
   std::ofstream file_;
 };
 
+// Prints contact events as they happen: "step 12 begin 0 3".
+class EventPrinter final : public ContactListener {
+ public:
+  explicit EventPrinter(const World& world) : world_(world) {}
+  void onContactBegin(const Contact& contact) override { print("begin", contact.a, contact.b); }
+  void onContactStay(const Contact& contact) override { print("stay", contact.a, contact.b); }
+  void onContactEnd(std::uint32_t a, std::uint32_t b) override { print("end", a, b); }
+
+ private:
+  void print(const char* what, std::uint32_t a, std::uint32_t b) {
+    std::printf("step %d %s %u %u\n", world_.stepCount() + 1, what, a, b);
+  }
+  const World& world_;
+};
+
 }  // namespace
 
 int runSimulate(const std::vector<std::string>& args) {
   const CommandSpec spec{
       "simulate",
-      "SCENE [--steps N] [--trace FILE.csv] [--hash]",
+      "SCENE [--steps N] [--trace FILE.csv] [--hash] [--events]",
       "Runs SCENE (a built-in name or a scene file) without rendering and prints a summary.\n"
       "Exits with 1 when a body's state became NaN or Inf (the body is reported and frozen).",
       {{"--steps", "", "N", "number of steps (default: the scene's steps)"},
        {"--trace", "", "FILE.csv", "write every body's state at every step (step 0 = initial state)"},
-       {"--hash", "", "", "print a hash of all body states at the end (determinism checks)"}},
+       {"--hash", "", "", "print a hash of all body states at the end (determinism checks)"},
+       {"--events", "", "", "print contact events: 'step N begin|stay|end A B'"}},
       1,
       1};
   const auto parsed = Arguments::parse(spec, args);
@@ -59,6 +75,8 @@ int runSimulate(const std::vector<std::string>& args) {
   const SceneDescription scene = resolveScene(parsed->positional()[0]);
   const int steps = parsed->positiveInt("--steps", scene.steps);
   World world = buildWorld(scene);
+  EventPrinter events(world);
+  if (parsed->has("--events")) world.setContactListener(&events);
   std::optional<TraceWriter> trace;
   if (parsed->has("--trace")) {
     trace.emplace(parsed->value("--trace"));
@@ -80,6 +98,11 @@ int runSimulate(const std::vector<std::string>& args) {
   std::printf("scene %s: %zu bodies, %d steps of %.6g s (%.4g s simulated)\n", scene.name.c_str(), world.bodyCount(),
               steps, scene.world.dt, world.time());
   std::printf("step time %.4f ms (mean), final kinetic energy %.6g J\n", 1e3 * stepSeconds / steps, kineticEnergy);
+  const StepStats& stats = world.lastStepStats();
+  std::printf("last step: %d awake, %d sleeping, %d candidate pairs, %d contacts; narrow phase: %lld fast path, "
+              "%lld GJK, %lld EPA\n",
+              stats.awakeBodies, stats.sleepingBodies, stats.candidatePairs, stats.contacts, stats.narrowPhase.fastPath,
+              stats.narrowPhase.gjk, stats.narrowPhase.epa);
   if (parsed->has("--hash")) std::printf("state hash %s\n", hexHash(worldStateHash(world)).c_str());
   for (const NumericalFault& fault : world.numericalFaults()) {
     std::fprintf(stderr, "physdbg simulate: body %u: %s at step %d; body frozen\n", fault.body, fault.what.c_str(),

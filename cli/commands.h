@@ -15,6 +15,7 @@ struct Subcommand {
 int runScenes(const std::vector<std::string>& args);
 int runSimulate(const std::vector<std::string>& args);
 int runRender(const std::vector<std::string>& args);
+int runContacts(const std::vector<std::string>& args);
 int runBench(const std::vector<std::string>& args);
 
 }  // namespace physdbg::cli

@@ -18,6 +18,8 @@ const std::vector<Subcommand>& subcommands() {
       {"scenes", "list the built-in scenes", physdbg::cli::runScenes},
       {"simulate", "run a scene without rendering; summary, CSV trace, state hash", physdbg::cli::runSimulate},
       {"render", "simulate a scene and write a PNG frame sequence (and an MP4)", physdbg::cli::runRender},
+      {"contacts", "every contact of a scene's initial state: normal, depth, points (JSON)",
+       physdbg::cli::runContacts},
       {"bench", "run benchmarks side by side with peer engines, print JSON", physdbg::cli::runBench},
   };
   return commands;

@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/colliders/box_collider.h"
+#include "engine/colliders/capsule_collider.h"
+#include "engine/colliders/convex_mesh_collider.h"
 #include "engine/colliders/sphere_collider.h"
 #include "scenes/scene.h"
 
@@ -128,9 +130,37 @@ class SceneReader {
   std::string source_;
 };
 
+std::shared_ptr<const Collider> readConvex(const SceneReader& reader, const json& parameters, const std::string& path) {
+  reader.requireObject(parameters, path);
+  reader.checkKeys(parameters, path, {"points"});
+  if (!parameters.contains("points")) reader.fail(path, "missing key points");
+  const json& list = reader.array(parameters["points"], path + ".points", 0);
+  if (list.size() > 100000) reader.fail(path + ".points", "more than 100000 points");
+  std::vector<Vec3> points;
+  for (std::size_t i = 0; i < list.size(); ++i)
+    points.push_back(reader.vec3(list[i], path + ".points[" + std::to_string(i) + "]"));
+  try {
+    return std::make_shared<ConvexMeshCollider>(points);
+  } catch (const std::invalid_argument& error) {
+    reader.fail(path + ".points", error.what());
+  }
+}
+
+// A body rotates about its centre of mass, so a hull whose points are not
+// centred on it is re-expressed about its centroid and the body moved there.
+void centreConvexBody(BodyDefinition& body) {
+  const auto* hull = dynamic_cast<const ConvexMeshCollider*>(body.collider.get());
+  if (!hull || hull->centroid().norm() == 0.0) return;
+  std::vector<Vec3> points = hull->hullVertices();
+  for (Vec3& point : points) point -= hull->centroid();
+  body.position += body.orientation * hull->centroid();
+  body.collider = std::make_shared<ConvexMeshCollider>(points);
+}
+
 std::shared_ptr<const Collider> readShape(const SceneReader& reader, const json& value, const std::string& path) {
   reader.requireObject(value, path);
-  if (value.size() != 1) reader.fail(path, "must have exactly one key naming the shape (sphere, box)");
+  if (value.size() != 1)
+    reader.fail(path, "must have exactly one key naming the shape (sphere, box, capsule, convex)");
   const auto& [kind, parameters] = *value.items().begin();
   const std::string here = path + "." + kind;
   if (kind == "sphere") {
@@ -145,7 +175,16 @@ std::shared_ptr<const Collider> readShape(const SceneReader& reader, const json&
     if (!parameters.contains("half_extents")) reader.fail(here, "missing key half_extents");
     return std::make_shared<BoxCollider>(reader.positiveVec3(parameters["half_extents"], here + ".half_extents"));
   }
-  reader.fail(path, "unknown shape '" + kind + "' (known: sphere, box)");
+  if (kind == "capsule") {
+    reader.requireObject(parameters, here);
+    reader.checkKeys(parameters, here, {"radius", "half_height"});
+    if (!parameters.contains("radius") || !parameters.contains("half_height"))
+      reader.fail(here, "needs radius and half_height");
+    return std::make_shared<CapsuleCollider>(reader.positive(parameters["radius"], here + ".radius"),
+                                             reader.nonNegative(parameters["half_height"], here + ".half_height"));
+  }
+  if (kind == "convex") return readConvex(reader, parameters, here);
+  reader.fail(path, "unknown shape '" + kind + "' (known: sphere, box, capsule, convex)");
 }
 
 // One body entry may expand to a grid of bodies ("repeat"): x varies fastest,
@@ -182,6 +221,7 @@ void readBody(const SceneReader& reader, const json& value, const std::string& p
     body.lockTranslation = reader.bool3(value["lock_translation"], key("lock_translation"));
   if (value.contains("lock_rotation")) body.lockRotation = reader.bool3(value["lock_rotation"], key("lock_rotation"));
 
+  centreConvexBody(body);
   if (!value.contains("repeat")) {
     bodies.push_back(body);
     return;
@@ -231,7 +271,8 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
     reader.fail("", std::string("malformed JSON: ") + error.what());
   }
   reader.requireObject(root, "");
-  reader.checkKeys(root, "", {"name", "description", "gravity", "dt", "steps", "bodies", "camera", "layers"});
+  reader.checkKeys(root, "", {"name", "description", "gravity", "dt", "steps", "bodies", "camera", "layers",
+                              "allow_sleep", "broadphase"});
   SceneDescription scene;
   scene.name = std::filesystem::path(sourceName).stem().string();
   if (root.contains("name")) scene.name = reader.string(root["name"], "name");
@@ -239,6 +280,13 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
   if (root.contains("gravity")) scene.world.gravity = reader.vec3(root["gravity"], "gravity");
   if (root.contains("dt")) scene.world.dt = reader.positive(root["dt"], "dt");
   if (root.contains("steps")) scene.steps = reader.positiveInteger(root["steps"], "steps");
+  if (root.contains("allow_sleep")) scene.world.allowSleep = reader.boolean(root["allow_sleep"], "allow_sleep");
+  if (root.contains("broadphase")) {
+    const std::string kind = reader.string(root["broadphase"], "broadphase");
+    if (kind == "tree") scene.world.broadPhase = BroadPhaseKind::Tree;
+    else if (kind == "brute_force") scene.world.broadPhase = BroadPhaseKind::BruteForce;
+    else reader.fail("broadphase", "must be \"tree\" or \"brute_force\", got \"" + kind + "\"");
+  }
   if (root.contains("camera")) scene.camera = readCamera(reader, root["camera"], "camera");
   if (root.contains("layers")) {
     scene.layers = reader.string(root["layers"], "layers");

@@ -166,3 +166,43 @@ TEST(BuiltinScenes, EveryBuiltinSceneBuilds) {
 
 }  // namespace
 }  // namespace physdbg
+
+namespace physdbg {
+namespace {
+
+TEST(SceneLoader, CapsuleConvexAndWorldKeys) {
+  const SceneDescription scene = parseScene(R"({"allow_sleep": false, "broadphase": "brute_force", "bodies": [
+      {"shape": {"capsule": {"radius": 0.25, "half_height": 0.5}}},
+      {"shape": {"convex": {"points": [[0,0,0],[2,0,0],[0,2,0],[0,0,2],[2,0,0]]}}, "position": [10, 0, 0]}]})",
+                                            "shapes.json");
+  EXPECT_FALSE(scene.world.allowSleep);
+  EXPECT_EQ(scene.world.broadPhase, BroadPhaseKind::BruteForce);
+  ASSERT_EQ(scene.bodies.size(), 2u);
+  EXPECT_EQ(scene.bodies[0].collider->kind(), ColliderKind::Capsule);
+  EXPECT_EQ(scene.bodies[1].collider->kind(), ColliderKind::ConvexMesh);
+  // The tetrahedron's centroid (0.5, 0.5, 0.5) becomes the body's position.
+  EXPECT_TRUE(scene.bodies[1].position.isApprox(Vec3(10.5, 0.5, 0.5), 1e-12));
+  EXPECT_TRUE(scene.bodies[1].collider->localSupport(Vec3(1, 0, 0)).isApprox(Vec3(1.5, -0.5, -0.5), 1e-12));
+}
+
+TEST(SceneLoader, RejectsBadCapsulesHullsAndWorldKeys) {
+  const auto message = [](const std::string& text) {
+    try {
+      parseScene(text, "bad.json");
+    } catch (const SceneError& error) {
+      return std::string(error.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(message(R"({"bodies": [{"shape": {"capsule": {"radius": 0.5}}}]})").find("half_height"), std::string::npos);
+  EXPECT_NE(message(R"({"bodies": [{"shape": {"convex": {"points": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]]}}}]})")
+                .find("bodies[0].shape.convex.points"),
+            std::string::npos);
+  EXPECT_NE(message(R"({"bodies": [{"shape": {"convex": {"points": [[0,0,0],[1,0]]}}}]})").find("points[1]"),
+            std::string::npos);
+  EXPECT_NE(message(R"({"broadphase": "octree", "bodies": []})").find("broadphase"), std::string::npos);
+  EXPECT_NE(message(R"({"allow_sleep": "yes", "bodies": []})").find("allow_sleep"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace physdbg
