@@ -1,6 +1,7 @@
 #include "render/camera.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -75,6 +76,21 @@ Bounds frameBounds(const debugdraw::Frame& frame) {
   return bounds;
 }
 
+namespace {
+
+std::array<Vector3d, 8> corners(const Bounds& bounds) {
+  std::array<Vector3d, 8> result;
+  for (int corner = 0; corner < 8; ++corner)
+    result[corner] = Vector3d((corner & 1 ? bounds.max : bounds.min).x(), (corner & 2 ? bounds.max : bounds.min).y(),
+                              (corner & 4 ? bounds.max : bounds.min).z());
+  return result;
+}
+
+// Fraction of the view the framed bounds may fill, leaving a small border.
+constexpr double kFill = 0.92;
+
+}  // namespace
+
 Camera frameBoundsCamera(const Bounds& bounds, double aspect, Vector3d viewDirection) {
   if (!(aspect > 0) || !std::isfinite(aspect)) throw std::invalid_argument("frameBoundsCamera: aspect must be positive");
   if (!viewDirection.allFinite() || viewDirection.norm() < 1e-12)
@@ -83,16 +99,26 @@ Camera frameBoundsCamera(const Bounds& bounds, double aspect, Vector3d viewDirec
   if (!framed.min.allFinite() || !framed.max.allFinite())
     throw std::invalid_argument("frameBoundsCamera: bounds must be finite");
   Camera camera;
-  const Vector3d direction = viewDirection.normalized();
-  // A point-like scene still gets a view of some size around it.
-  const double radius = std::max(0.5 * (framed.max - framed.min).norm(), 1e-3 * (1.0 + framed.max.cwiseAbs().maxCoeff()));
-  const double halfFovY = camera.fovYDegrees * std::numbers::pi / 360.0;
-  const double halfFovX = std::atan(std::tan(halfFovY) * aspect);
-  const double distance = radius / std::sin(std::min(halfFovY, halfFovX));
+  const Vector3d forward = viewDirection.normalized();
+  camera.up = std::abs(forward.y()) > 0.999 ? Vector3d(0, 0, -1) : Vector3d(0, 1, 0);
   camera.target = 0.5 * (framed.min + framed.max);
-  camera.eye = camera.target - direction * distance;
-  camera.up = std::abs(direction.y()) > 0.999 ? Vector3d(0, 0, -1) : Vector3d(0, 1, 0);
-  camera.orthoHeight = 2.0 * radius * std::max(1.0, 1.0 / aspect);
+  const Vector3d right = forward.cross(camera.up).normalized(), up = right.cross(forward);
+  // A point-like scene still gets a view of some size around it.
+  const double radius =
+      std::max(0.5 * (framed.max - framed.min).norm(), 1e-3 * (1.0 + framed.max.cwiseAbs().maxCoeff()));
+  const double tanY = kFill * std::tan(camera.fovYDegrees * std::numbers::pi / 360.0), tanX = tanY * aspect;
+  // Tight fit: the nearest eye distance along `forward` at which every corner
+  // lies inside the frustum, and a little in front of the eye.
+  double distance = 0, halfWidth = 0, halfHeight = 0;
+  for (const Vector3d& corner : corners(framed)) {
+    const Vector3d offset = corner - camera.target;
+    const double x = std::abs(offset.dot(right)), y = std::abs(offset.dot(up)), z = offset.dot(forward);
+    distance = std::max({distance, x / tanX - z, y / tanY - z, 0.1 * radius - z});
+    halfWidth = std::max(halfWidth, x);
+    halfHeight = std::max(halfHeight, y);
+  }
+  camera.eye = camera.target - forward * distance;
+  camera.orthoHeight = std::max({2 * halfHeight, 2 * halfWidth / aspect, 0.1 * radius}) / kFill;
   return camera;
 }
 

@@ -11,6 +11,7 @@
 #include "render/mesh_cache.h"
 #include "render/render_target.h"
 #include "render/shaders.h"
+#include "render/sphere_detail.h"
 #include "render/vertex_stream.h"
 
 namespace physdbg::render {
@@ -21,7 +22,7 @@ using Eigen::Vector3d;
 constexpr int kMaxDimension = 16384;
 constexpr int kMaxSamples = 16;
 constexpr float kBackground[4] = {0.11f, 0.12f, 0.14f, 1.0f};
-constexpr int kSphereSegments = 32, kSphereRings = 16, kConeSegments = 16;
+constexpr int kConeSegments = 16;
 
 void validate(const RendererOptions& options) {
   if (options.width <= 0 || options.height <= 0 || options.width > kMaxDimension || options.height > kMaxDimension)
@@ -59,7 +60,9 @@ DepthRange depthRange(const debugdraw::Frame& frame, const Camera& camera) {
     nearest = std::min(nearest, depth);
     farthest = std::max(farthest, depth);
   }
-  const double margin = 0.01 * (farthest - nearest) + 1e-6 * distance + 1e-9;
+  // Arrow heads reach up to 0.08 of their arrow's length off the bounds, and a
+  // flat scene must still get a depth range of some thickness.
+  const double margin = 0.1 * (bounds.max - bounds.min).norm() + 1e-6 * distance + 1e-9;
   farthest += margin;
   nearest -= margin;
   if (camera.orthographic) return {nearest, farthest};
@@ -80,7 +83,7 @@ class Renderer::Impl {
         point_(createProgram(shaders::kPointVertex, shaders::kPointFragment, "point")),
         text_(createProgram(shaders::kTextVertex, shaders::kUnlitFragment, "text")),
         cube_(uploadInstancedMesh(unitCube(), GL_TRIANGLES)),
-        sphere_(uploadInstancedMesh(capsuleSphere(kSphereSegments, kSphereRings), GL_TRIANGLES)),
+        spheres_(uploadSphereLevels()),
         cone_(uploadInstancedMesh(unitCone(kConeSegments), GL_TRIANGLES)),
         cubeEdges_(uploadInstancedMesh(unitCubeEdges(), GL_LINES)),
         lines_(sizeof(ColoredVertex), {{0, 3, offsetof(ColoredVertex, position)}, {1, 4, offsetof(ColoredVertex, color)}}),
@@ -100,7 +103,7 @@ class Renderer::Impl {
     target_.bindForDrawing();
     setUpState();
     const Eigen::Matrix4f viewProjection = viewProjectionMatrix(frame, camera);
-    drawSolids(batches, viewProjection, lightDirection(camera));
+    drawSolids(batches, camera, viewProjection);
     drawOverlays(batches, viewProjection);
     drawText(batches);
     meshCache_.endFrame();
@@ -117,7 +120,6 @@ class Renderer::Impl {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
-    glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
     // Alpha stays 1 over the opaque background so PNGs are opaque.
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
@@ -136,17 +138,34 @@ class Renderer::Impl {
     glUniformMatrix4fv(glGetUniformLocation(program.get(), "uViewProjection"), 1, GL_FALSE, viewProjection.data());
   }
 
-  void drawSolids(const FrameBatches& batches, const Eigen::Matrix4f& viewProjection, const Eigen::Vector3f& light) {
+  static std::vector<InstancedMesh> uploadSphereLevels() {
+    std::vector<InstancedMesh> levels;
+    for (int segments : kSphereSegments) levels.push_back(uploadInstancedMesh(capsuleSphere(segments, segments / 2), GL_TRIANGLES));
+    return levels;
+  }
+
+  // One instanced draw per detail level in use.
+  void drawRound(const std::vector<Instance>& instances, const Camera& camera) {
+    const auto levels = splitByDetail(instances, camera, options_.height);
+    for (std::size_t level = 0; level < levels.size(); ++level) drawInstances(spheres_[level], levels[level]);
+  }
+
+  void drawSolids(const FrameBatches& batches, const Camera& camera, const Eigen::Matrix4f& viewProjection) {
+    const Eigen::Vector3f light = lightDirection(camera);
     // Pushed back slightly so wire boxes and lines on their surfaces stay visible.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
+    // Every solid mesh is closed and counter-clockwise from outside (flat boxes
+    // keep both faces), so back faces never show: skipping them halves the fill.
+    glEnable(GL_CULL_FACE);
     useProgram(solid_, viewProjection);
     glUniform3fv(glGetUniformLocation(solid_.get(), "uLightDirection"), 1, light.data());
     drawInstances(cube_, batches.boxes);
-    drawInstances(sphere_, batches.spheres);
-    drawInstances(sphere_, batches.capsules);
+    drawRound(batches.spheres, camera);
+    drawRound(batches.capsules, camera);
     for (const MeshBatch& batch : batches.meshes) drawInstances(meshCache_.get(*batch.mesh), batch.instances);
     drawInstances(cone_, batches.arrowHeads);
+    glDisable(GL_CULL_FACE);
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
 
@@ -170,7 +189,9 @@ class Renderer::Impl {
   RendererOptions options_;
   std::unique_ptr<GlContext> context_;  // declared first: destroyed after every GL object
   GlProgram solid_, wire_, line_, point_, text_;
-  InstancedMesh cube_, sphere_, cone_, cubeEdges_;
+  InstancedMesh cube_;
+  std::vector<InstancedMesh> spheres_;  // one per detail level
+  InstancedMesh cone_, cubeEdges_;
   VertexStream lines_, points_, texts_;
   MeshCache meshCache_;
   RenderTarget target_;

@@ -49,6 +49,13 @@ int countPixels(const Image& image, const std::function<bool(const Pixel&)>& pre
   return count;
 }
 
+bool anyNear(const Image& image, const Eigen::Vector2d& at, const std::function<bool(const Pixel&)>& predicate) {
+  bool found = false;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) found |= predicate(pixelAt(image, int(at.x()) + dx, int(at.y()) + dy));
+  return found;
+}
+
 TEST_F(RendererTest, EmptyFrameIsAllBackground) {
   const Image image = renderer.render(Frame{}, Camera{});
   ASSERT_EQ(image.width, kWidth);
@@ -84,7 +91,7 @@ TEST_F(RendererTest, WireBoxColoursItsEdgesOnly) {
   frame.wireBoxes.push_back({Vector3d::Zero(), Quaterniond::Identity(), Vector3d(1, 1, 1), kGreen});
   const Camera camera = cameraFor(frame);
   const Image image = renderer.render(frame, camera);
-  // Midpoints of the twelve edges, nudged a quarter pixel never matters at this size.
+  // Midpoints of the twelve edges; a line may land on either side of a pixel boundary.
   int edgesSeen = 0;
   for (int axis = 0; axis < 3; ++axis)
     for (double u : {-1.0, 1.0})
@@ -93,11 +100,7 @@ TEST_F(RendererTest, WireBoxColoursItsEdgesOnly) {
         midpoint[(axis + 1) % 3] = u;
         midpoint[(axis + 2) % 3] = v;
         const Eigen::Vector2d at = testing::projectToPixel(camera, kWidth, kHeight, midpoint);
-        bool found = false;
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx)
-            found |= isColor(pixelAt(image, int(at.x()) + dx, int(at.y()) + dy), kGreen);
-        edgesSeen += found ? 1 : 0;
+        edgesSeen += anyNear(image, at, [](const Pixel& p) { return isColor(p, kGreen); }) ? 1 : 0;
       }
   EXPECT_EQ(edgesSeen, 12);
   for (const Vector3d& faceCentre : {Vector3d(0, 1, 0), Vector3d(1, 0, 0), Vector3d(0, 0, 1), Vector3d(0, 0, 0)})
@@ -129,8 +132,9 @@ TEST_F(RendererTest, LinesAndArrowsShowUp) {
   EXPECT_GT(head[0], head[1]);
   EXPECT_GT(head[1], head[2]);
   EXPECT_FALSE(isBackground(head));
-  const Pixel shaft = pixelAtPoint(image, camera, Vector3d(0, -1, 0));
-  EXPECT_TRUE(isColor(shaft, debugdraw::colors::contactNormal)) << shaft[0] << " " << shaft[1] << " " << shaft[2];
+  // The shaft lies on a pixel boundary here: either neighbour may carry it.
+  const Eigen::Vector2d shaft = testing::projectToPixel(camera, kWidth, kHeight, Vector3d(0, -1, 0));
+  EXPECT_TRUE(anyNear(image, shaft, [](const Pixel& p) { return isColor(p, debugdraw::colors::contactNormal); }));
 }
 
 TEST_F(RendererTest, TextIsPixelAlignedWithADarkOutline) {
@@ -193,10 +197,9 @@ TEST_F(RendererTest, ConvexMeshIsDrawnAndReuploadedWhenItChanges) {
   const Image first = renderer.render(frame, camera);
   const Pixel centre = pixelAt(first, kWidth / 2, kHeight / 2);
   EXPECT_GT(centre[1], 2 * centre[0]);
-  // Same id, other geometry (half the triangles): the cache notices.
+  // Same id, other geometry (only the half facing away): the cache notices.
   auto half = std::make_shared<debugdraw::TriangleMesh>(*octahedron);
-  half->indices.resize(12);
-  half->vertices.pop_back();
+  half->indices.erase(half->indices.begin(), half->indices.begin() + 12);
   frame.meshes[0].mesh = half;
   EXPECT_NE(renderer.render(frame, camera).rgba, first.rgba);
 }
