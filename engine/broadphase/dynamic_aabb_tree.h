@@ -103,6 +103,7 @@ class DynamicAabbTree {
   int findBestSiblingBranchAndBound(const Aabb& box);
   int findBestSiblingGreedy(const Aabb& box) const;
   void refitAncestors(int node);
+  void shrinkAncestors(int node);
   void refitNode(int node);
   void rotate(int node);
   void swapSubtrees(int node, int upper, int lower);
