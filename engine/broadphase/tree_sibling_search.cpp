@@ -47,7 +47,11 @@ int DynamicAabbTree::findBestSiblingBranchAndBound(const Aabb& box) {
       const Aabb& childBox = nodes_[child].box;
       const double direct = childBox.merged(box).surfaceArea();
       const double cost = direct + candidate.inherited;
-      if (cost < bestCost || (cost == bestCost && child < best)) {
+      // Strictly better only: on a tie the first found, the shallower one in
+      // best-first order, wins. Sorted input is full of exact ties, and taking
+      // the deeper one builds chains (a sorted 32^3 lattice ends at 2.7x the
+      // top-down SAR instead of 1.35x).
+      if (cost < bestCost) {
         bestCost = cost;
         best = child;
       }
