@@ -146,7 +146,20 @@ void DynamicAabbTree::removeLeaf(int leaf) {
   }
   freeNode(parent);
   nodes_[leaf].parent = nullNode;
-  if (grandParent != nullNode) refitAncestors(grandParent);
+  shrinkAncestors(grandParent);
+}
+
+// After a removal boxes can only shrink; once one stays the same, so do all above
+// it. No rotations here: the reinsertion that usually follows rotates its own path.
+void DynamicAabbTree::shrinkAncestors(int node) {
+  while (node != nullNode) {
+    const Aabb before = nodes_[node].box;
+    const int heightBefore = nodes_[node].height;
+    refitNode(node);
+    const Aabb& after = nodes_[node].box;
+    if (after.min == before.min && after.max == before.max && nodes_[node].height == heightBefore) return;
+    node = nodes_[node].parent;
+  }
 }
 
 void DynamicAabbTree::refitNode(int node) {

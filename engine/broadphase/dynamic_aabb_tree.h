@@ -23,13 +23,16 @@ struct DynamicAabbTreeOptions {
   bool rotations = true;
 };
 
-// One rotation applied during a refit walk: `first` and `second` swapped places
-// below `node`. The SAR figures are only computed while the log is enabled.
+// One rotation applied during a refit walk: subtree `first` moved down and
+// `second` moved up, below `node`. Only recorded while the log is enabled,
+// which is when the O(n) SAR figures are paid for.
 struct RotationEvent {
   int node = -1;
   int first = -1;
   int second = -1;
-  double areaBefore = 0.0;  // summed area of the two rotated subtrees' changed parent
+  Aabb firstBox;   // the two swapped subtrees' boxes, for drawing
+  Aabb secondBox;
+  double areaBefore = 0.0;  // area of the one node whose box the swap changes
   double areaAfter = 0.0;
   double sarBefore = 0.0;
   double sarAfter = 0.0;
@@ -103,6 +106,7 @@ class DynamicAabbTree {
   int findBestSiblingBranchAndBound(const Aabb& box);
   int findBestSiblingGreedy(const Aabb& box) const;
   void refitAncestors(int node);
+  void shrinkAncestors(int node);
   void refitNode(int node);
   void rotate(int node);
   void swapSubtrees(int node, int upper, int lower);

@@ -87,12 +87,47 @@ void TreeBroadPhase::queryChanged(int proxy) {
   }
 }
 
+namespace {
+
+// Spreads the low 10 bits of value to every third bit.
+std::uint32_t spreadBits(std::uint32_t value) {
+  value &= 0x3ff;
+  value = (value | (value << 16)) & 0x030000ff;
+  value = (value | (value << 8)) & 0x0300f00f;
+  value = (value | (value << 4)) & 0x030c30c3;
+  value = (value | (value << 2)) & 0x09249249;
+  return value;
+}
+
+}  // namespace
+
+// Queries of nearby proxies walk the same nodes: visiting them in Morton order
+// keeps those nodes in cache. Ties fall back to the proxy id, so the order is
+// reproducible (the pair set does not depend on it anyway).
+void TreeBroadPhase::orderForLocality() {
+  keyed_.clear();
+  if (tree_.root() == DynamicAabbTree::nullNode) return;
+  const Aabb& bounds = tree_.box(tree_.root());
+  const Vec3 scale = (bounds.max - bounds.min).cwiseMax(Vec3::Constant(1e-300)).cwiseInverse() * 1023.0;
+  for (const int proxy : changed_) {
+    std::uint32_t key = 0;
+    if (tree_.isProxy(proxy)) {
+      const Vec3 cell = ((tree_.box(proxy).center() - bounds.min).cwiseProduct(scale)).cwiseMax(0.0).cwiseMin(1023.0);
+      key = spreadBits(static_cast<std::uint32_t>(cell.x())) | (spreadBits(static_cast<std::uint32_t>(cell.y())) << 1) |
+            (spreadBits(static_cast<std::uint32_t>(cell.z())) << 2);
+    }
+    keyed_.emplace_back(key, proxy);
+  }
+  std::sort(keyed_.begin(), keyed_.end());
+  for (std::size_t i = 0; i < keyed_.size(); ++i) changed_[i] = keyed_[i].second;
+}
+
 void TreeBroadPhase::findPairs(std::vector<BodyPair>& pairs) {
   stats_ = BroadPhaseStats{};
   stats_.proxiesReinserted = reinsertedSinceFind_;
   reinsertedSinceFind_ = 0;
   fresh_.clear();
-  std::sort(changed_.begin(), changed_.end());  // query order does not matter, but keep it reproducible
+  orderForLocality();
   for (const int proxy : changed_) {
     if (tree_.isProxy(proxy)) queryChanged(proxy);
   }

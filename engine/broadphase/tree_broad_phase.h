@@ -3,6 +3,8 @@
 // proxies whose fat box changed (reinserted, added, woken, put to sleep) query
 // the tree; pairs between proxies that did not change are carried over from
 // the previous call, since neither their boxes nor their eligibility changed.
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "engine/broadphase/broad_phase.h"
@@ -42,6 +44,7 @@ class TreeBroadPhase final : public BroadPhase {
   void touch(int proxy);
   bool drivesPairs(int proxy) const;
   void queryChanged(int proxy);
+  void orderForLocality();
   void requireProxy(int proxy, const char* operation) const;
 
   DynamicAabbTree tree_;
@@ -51,6 +54,7 @@ class TreeBroadPhase final : public BroadPhase {
   std::vector<ProxyPair> fresh_;
   std::vector<ProxyPair> merged_;
   std::vector<int> stack_;
+  std::vector<std::pair<std::uint32_t, int>> keyed_;  // Morton key, proxy
   BroadPhaseStats stats_;
   long long reinsertedSinceFind_ = 0;
 };

@@ -42,6 +42,8 @@ void DynamicAabbTree::rotate(int node) {
   event.node = node;
   event.first = upper;
   event.second = lower;
+  event.firstBox = nodes_[upper].box;
+  event.secondBox = nodes_[lower].box;
   event.areaBefore = nodes_[nodes_[lower].parent].box.surfaceArea();
   event.sarBefore = surfaceAreaRatio();
   const int changed = nodes_[lower].parent;

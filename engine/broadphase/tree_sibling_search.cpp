@@ -24,9 +24,18 @@ struct LaterCandidateFirst {
 int DynamicAabbTree::findBestSiblingBranchAndBound(const Aabb& box) {
   const double leafArea = box.surfaceArea();
   int best = root_;
-  double bestCost = nodes_[root_].box.merged(box).surfaceArea();
+  const double rootDirect = nodes_[root_].box.merged(box).surfaceArea();
+  double bestCost = rootDirect;
   heap_.clear();
-  heap_.push_back({leafArea, root_, 0.0});
+  // Heap entries are internal nodes whose own cost is already counted; the key
+  // bounds their children's subtrees: inherited growth including the node's own.
+  auto pushIfPromising = [&](int node, double inheritedWithOwnGrowth) {
+    if (nodes_[node].child1 != nullNode && inheritedWithOwnGrowth + leafArea < bestCost) {
+      heap_.push_back({inheritedWithOwnGrowth + leafArea, node, inheritedWithOwnGrowth});
+      std::push_heap(heap_.begin(), heap_.end(), LaterCandidateFirst{});
+    }
+  };
+  pushIfPromising(root_, rootDirect - nodes_[root_].box.surfaceArea());
   while (!heap_.empty()) {
     std::pop_heap(heap_.begin(), heap_.end(), LaterCandidateFirst{});
     const Candidate candidate = heap_.back();
@@ -34,19 +43,19 @@ int DynamicAabbTree::findBestSiblingBranchAndBound(const Aabb& box) {
     // Every remaining candidate is bounded below by this one's bound.
     if (candidate.lowerBound >= bestCost) break;
     const Node& node = nodes_[candidate.node];
-    const double directCost = node.box.merged(box).surfaceArea();
-    const double cost = directCost + candidate.inherited;
-    if (cost < bestCost) {
-      bestCost = cost;
-      best = candidate.node;
-    }
-    if (node.child1 == nullNode) continue;
-    const double inherited = candidate.inherited + directCost - node.box.surfaceArea();
-    const double lowerBound = inherited + leafArea;
-    if (lowerBound >= bestCost) continue;
     for (const int child : {node.child1, node.child2}) {
-      heap_.push_back({lowerBound, child, inherited});
-      std::push_heap(heap_.begin(), heap_.end(), LaterCandidateFirst{});
+      const Aabb& childBox = nodes_[child].box;
+      const double direct = childBox.merged(box).surfaceArea();
+      const double cost = direct + candidate.inherited;
+      // Strictly better only: on a tie the first found, the shallower one in
+      // best-first order, wins. Sorted input is full of exact ties, and taking
+      // the deeper one builds chains (a sorted 32^3 lattice ends at 2.7x the
+      // top-down SAR instead of 1.35x).
+      if (cost < bestCost) {
+        bestCost = cost;
+        best = child;
+      }
+      pushIfPromising(child, candidate.inherited + direct - childBox.surfaceArea());
     }
   }
   return best;
