@@ -2,9 +2,12 @@
 
 namespace physdbg::bench {
 
+Benchmark narrowBenchmark();
+
 // Each benchmark lives in its own file and is listed here, in output order.
 std::vector<Benchmark> allBenchmarks() {
   std::vector<Benchmark> benchmarks;
+  benchmarks.push_back(narrowBenchmark());
   return benchmarks;
 }
 

@@ -45,12 +45,6 @@ struct Polytope {
   }
 };
 
-SimplexVertex supportOfDifference(SupportShape& a, SupportShape& b, const Vec3& direction) {
-  const Vec3 pa = a.support(direction);
-  const Vec3 pb = b.support(-direction);
-  return {pa - pb, pa, pb};
-}
-
 // Distance from w to the affine hull of the accepted points (0, 1, 2 or 3 of them).
 double offHullDistance(const std::array<SimplexVertex, 4>& points, int count, const Vec3& w) {
   if (count == 0) return std::numeric_limits<double>::infinity();
