@@ -40,8 +40,8 @@ Quat randomRotation(std::mt19937& rng) {
   return Quat(gaussian(rng), gaussian(rng), gaussian(rng), gaussian(rng)).normalized();
 }
 
-// B is pushed along a random direction until the supports overlap by
-// `fraction` of the pair size along it, so the true depth is at most that.
+// B is pushed along a random direction until the supports overlap by a
+// multiple of `fraction` of the pair size along it and the pair penetrates.
 std::vector<Pose> makePoses(const PairCase& c, double fraction, int count, unsigned seed) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> gaussian(0.0, 1.0);
@@ -52,7 +52,12 @@ std::vector<Pose> makePoses(const PairCase& c, double fraction, int count, unsig
     Pose pose{{Vec3::Zero(), randomRotation(rng)}, {Vec3::Zero(), randomRotation(rng)}};
     const double reachA = c.a->support(pose.a, u).dot(u);
     const double reachB = c.b->support(pose.b, -u).dot(-u);
-    pose.b.position = u * (reachA + reachB - fraction * size);
+    // Overlapping supports along u need not mean contact (another axis may
+    // separate): step closer until the pair really penetrates.
+    for (int step = 1; step < 100; ++step) {
+      pose.b.position = u * (reachA + reachB - step * fraction * size);
+      if (collide(*c.a, pose.a, *c.b, pose.b).status == ContactStatus::Penetrating) break;
+    }
     if (i < c.referencePoses) pose.reference = c.reference(pose);
     poses.push_back(pose);
   }
