@@ -62,9 +62,16 @@ int ConvexMeshCollider::supportIndex(const Vec3& direction, int hint) const {
     }
     return best;
   }
-  int start = hint >= 0 && hint < count ? hint : seedVertices_[0];
+  // Candidates: the hint, the extreme vertex of the dominant axis and that of
+  // the direction's octant diagonal.
+  int axis = 0;
+  direction.cwiseAbs().maxCoeff(&axis);
+  const int axisSeed = seedVertices_[2 * axis + (direction[axis] < 0.0 ? 1 : 0)];
+  const int octant = (direction.x() >= 0.0 ? 1 : 0) | (direction.y() >= 0.0 ? 2 : 0) | (direction.z() >= 0.0 ? 4 : 0);
+  int start = seedVertices_[6 + octant];
   double best = v[start].dot(direction);
-  for (int candidate : seedVertices_) {
+  for (int candidate : {axisSeed, hint}) {
+    if (candidate < 0 || candidate >= count) continue;
     const double value = v[candidate].dot(direction);
     if (value > best) best = value, start = candidate;
   }
