@@ -3,10 +3,13 @@
 
 namespace physdbg::bench {
 
+Benchmark narrowBenchmark();
+
 // Each benchmark lives in its own file and is listed here, in output order.
 std::vector<Benchmark> allBenchmarks() {
   std::vector<Benchmark> benchmarks;
   benchmarks.push_back({"tree", "broad-phase tree quality and speed against Bullet's btDbvt", runTreeBenchmark});
+  benchmarks.push_back(narrowBenchmark());
   return benchmarks;
 }
 

@@ -5,6 +5,13 @@ namespace {
 
 constexpr int kBruteForceVertexCount = 16;
 
+// Six axis directions, then the eight cube diagonals.
+Vec3 seedDirection(int s) {
+  if (s < 6) return Vec3::Unit(s / 2) * (s % 2 == 0 ? 1.0 : -1.0);
+  const int d = s - 6;
+  return Vec3(d & 1 ? 1.0 : -1.0, d & 2 ? 1.0 : -1.0, d & 4 ? 1.0 : -1.0);
+}
+
 // Covariance of a tetrahedron with one vertex at the origin (unit density).
 Mat3 tetrahedronCovariance(const Vec3& a, const Vec3& b, const Vec3& c) {
   Mat3 edges;
@@ -20,10 +27,10 @@ ConvexMeshCollider::ConvexMeshCollider(std::vector<Vec3> points) : hull_(buildCo
   const auto& v = hull_.vertices;
   bounds_ = {v.front(), v.front()};
   for (const Vec3& p : v) bounds_ = {bounds_.min.cwiseMin(p), bounds_.max.cwiseMax(p)};
-  for (int axis = 0; axis < 3; ++axis) {
+  for (int s = 0; s < static_cast<int>(seedVertices_.size()); ++s) {
+    const Vec3 direction = seedDirection(s);
     for (int i = 0; i < static_cast<int>(v.size()); ++i) {
-      if (v[i][axis] > v[axisExtremes_[2 * axis]][axis]) axisExtremes_[2 * axis] = i;
-      if (v[i][axis] < v[axisExtremes_[2 * axis + 1]][axis]) axisExtremes_[2 * axis + 1] = i;
+      if (v[i].dot(direction) > v[seedVertices_[s]].dot(direction)) seedVertices_[s] = i;
     }
   }
   // Mass properties from tetrahedra fanned from a point inside the hull, which
@@ -55,13 +62,20 @@ int ConvexMeshCollider::supportIndex(const Vec3& direction, int hint) const {
     }
     return best;
   }
-  if (hint < 0 || hint >= count) {
-    hint = axisExtremes_[0];
-    for (int candidate : axisExtremes_) {
-      if (v[candidate].dot(direction) > v[hint].dot(direction)) hint = candidate;
-    }
+  // Candidates: the hint, the extreme vertex of the dominant axis and that of
+  // the direction's octant diagonal.
+  int axis = 0;
+  direction.cwiseAbs().maxCoeff(&axis);
+  const int axisSeed = seedVertices_[2 * axis + (direction[axis] < 0.0 ? 1 : 0)];
+  const int octant = (direction.x() >= 0.0 ? 1 : 0) | (direction.y() >= 0.0 ? 2 : 0) | (direction.z() >= 0.0 ? 4 : 0);
+  int start = seedVertices_[6 + octant];
+  double best = v[start].dot(direction);
+  for (int candidate : {axisSeed, hint}) {
+    if (candidate < 0 || candidate >= count) continue;
+    const double value = v[candidate].dot(direction);
+    if (value > best) best = value, start = candidate;
   }
-  return climb(direction, hint);
+  return climb(direction, start);
 }
 
 int ConvexMeshCollider::climb(const Vec3& direction, int start) const {

@@ -2,7 +2,8 @@
 // Convex mesh from a point cloud. The hull is built once; support queries
 // hill-climb over hull-vertex adjacency (a linear function on a convex
 // polytope has no local maximum that is not global), starting from the best
-// of six axis-extreme vertices or from a caller's warm-start hint. Small hulls
+// of the caller's warm-start hint and fourteen precomputed extreme vertices
+// (along the axes and the cube diagonals). Small hulls
 // are scanned by brute force, which is faster than climbing.
 //
 // The local frame is the one the points are given in; centroid() is the centre
@@ -27,7 +28,7 @@ class ConvexMeshCollider final : public Collider {
   const Vec3& centroid() const { return centroid_; }
 
   // Index of the support vertex; `hint` is the vertex to start climbing from
-  // (any value is accepted; out-of-range hints start from the axis extremes).
+  // (any value is accepted; out-of-range hints are ignored).
   int supportIndex(const Vec3& direction, int hint = -1) const;
 
   ColliderKind kind() const override { return ColliderKind::ConvexMesh; }
@@ -40,7 +41,7 @@ class ConvexMeshCollider final : public Collider {
   int climb(const Vec3& direction, int start) const;
 
   ConvexHull hull_;
-  std::array<int, 6> axisExtremes_{};
+  std::array<int, 14> seedVertices_{};
   Aabb bounds_;
   Vec3 centroid_ = Vec3::Zero();
   double volume_ = 0.0;

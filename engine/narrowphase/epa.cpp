@@ -11,6 +11,12 @@ namespace {
 
 constexpr int kVertexCapacity = kEpaFaceCapacity / 2 + 4;
 
+struct Edge {
+  int from;
+  int to;
+  bool operator==(const Edge&) const = default;
+};
+
 struct Face {
   std::array<int, 3> v;
   Vec3 normal;
@@ -44,12 +50,6 @@ struct Polytope {
     return best;
   }
 };
-
-SimplexVertex supportOfDifference(SupportShape& a, SupportShape& b, const Vec3& direction) {
-  const Vec3 pa = a.support(direction);
-  const Vec3 pb = b.support(-direction);
-  return {pa - pb, pa, pb};
-}
 
 // Distance from w to the affine hull of the accepted points (0, 1, 2 or 3 of them).
 double offHullDistance(const std::array<SimplexVertex, 4>& points, int count, const Vec3& w) {
@@ -127,7 +127,7 @@ void initialisePolytope(Polytope& polytope, const std::array<SimplexVertex, 4>& 
 // Removes every face that sees w and closes the horizon to it. Returns false
 // when the budget leaves no room.
 bool expand(Polytope& polytope, const SimplexVertex& vertex, int faceBudget, double eps) {
-  std::array<std::pair<int, int>, kEpaFaceCapacity> removed;
+  std::array<Edge, kEpaFaceCapacity> removed;  // left uninitialised: filled before use
   int removedCount = 0;
   const int newIndex = polytope.vertexCount;
   for (int f = 0; f < polytope.faceCount; ++f) {
@@ -137,10 +137,10 @@ bool expand(Polytope& polytope, const SimplexVertex& vertex, int faceBudget, dou
     face.alive = false;
     for (int e = 0; e < 3; ++e) removed[removedCount++] = {face.v[e], face.v[(e + 1) % 3]};
   }
-  std::array<std::pair<int, int>, kEpaFaceCapacity> horizon;
+  std::array<Edge, kEpaFaceCapacity> horizon;
   int horizonCount = 0;
   for (int e = 0; e < removedCount; ++e) {
-    const auto reverse = std::pair{removed[e].second, removed[e].first};
+    const Edge reverse{removed[e].to, removed[e].from};
     if (std::find(removed.begin(), removed.begin() + removedCount, reverse) == removed.begin() + removedCount) {
       horizon[horizonCount++] = removed[e];
     }
@@ -152,7 +152,7 @@ bool expand(Polytope& polytope, const SimplexVertex& vertex, int faceBudget, dou
   polytope.faceCount = live;
   if (live + horizonCount > std::min(faceBudget, kEpaFaceCapacity) || newIndex >= kVertexCapacity) return false;
   polytope.vertices[polytope.vertexCount++] = vertex;
-  for (int e = 0; e < horizonCount; ++e) polytope.addFace(horizon[e].first, horizon[e].second, newIndex);
+  for (int e = 0; e < horizonCount; ++e) polytope.addFace(horizon[e].from, horizon[e].to, newIndex);
   return true;
 }
 

@@ -5,12 +5,6 @@
 namespace physdbg {
 namespace {
 
-SimplexVertex supportOfDifference(SupportShape& a, SupportShape& b, const Vec3& direction) {
-  const Vec3 pa = a.support(direction);
-  const Vec3 pb = b.support(-direction);
-  return {pa - pb, pa, pb};
-}
-
 bool repeats(const Simplex& simplex, const Vec3& w) {
   for (int i = 0; i < simplex.size; ++i) {
     if (simplex.vertices[i].w == w) return true;

@@ -21,6 +21,13 @@ struct GjkResult {
 // centre-to-centre direction.
 GjkResult runGjk(SupportShape& a, SupportShape& b, const NarrowPhaseOptions& options);
 
+// Support point of A - B along `direction`, with the points of A and B kept.
+inline SimplexVertex supportOfDifference(SupportShape& a, SupportShape& b, const Vec3& direction) {
+  const Vec3 pa = a.support(direction);
+  const Vec3 pb = b.support(-direction);
+  return {pa - pb, pa, pb};
+}
+
 // Scale of the pair used to make tolerances relative.
 inline double pairSize(const SupportShape& a, const SupportShape& b) {
   return a.size() + b.size() + (a.centre() - b.centre()).norm();
