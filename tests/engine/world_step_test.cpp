@@ -259,6 +259,28 @@ TEST(WorldStep, RestingSphereStaysAtRestFor1000Steps) {
   }
 }
 
+// A unit box resting flat gets one contact point per step from EPA, not the
+// face; an impulse off its centre of mass rocks it. Expected like the sphere:
+// within the allowed penetration, and no spin beyond what gravity adds in a
+// step (a flat face cannot start a rotation).
+TEST(WorldStep, RestingBoxStaysAtRestFor1000Steps) {
+  GTEST_SKIP() << "engine limitation: one contact point per pair (the design's future work lists manifolds); a "
+                  "unit box resting flat rocks with up to 0.74 rad/s and moves 0.009 m (> 0.005 allowed)";
+  WorldSettings settings;
+  settings.allowSleep = false;
+  World world(settings);
+  world.addBody(ground());
+  BodyDefinition definition;
+  definition.collider = std::make_shared<BoxCollider>(Vec3(0.5, 0.5, 0.5));
+  definition.position = Vec3(0, 0.5, 0);
+  const BodyId box = world.addBody(definition);
+  for (int i = 0; i < 1000; ++i) {
+    world.step();
+    ASSERT_LE((world.body(box).position() - definition.position).norm(), settings.response.allowedPenetration);
+    ASSERT_LT(world.body(box).angularVelocity().norm(), 1e-9);
+  }
+}
+
 // ---------------------------------------------------------------- locks
 
 // A box thrown at a tilt onto the ground would slide in x and spin about
