@@ -1,4 +1,5 @@
 #include "bench/bench.h"
+#include "bench/seed_bench.h"
 #include "bench/tree_bench.h"
 
 namespace physdbg::bench {
@@ -10,6 +11,8 @@ std::vector<Benchmark> allBenchmarks() {
   std::vector<Benchmark> benchmarks;
   benchmarks.push_back({"tree", "broad-phase tree quality and speed against Bullet's btDbvt", runTreeBenchmark});
   benchmarks.push_back(narrowBenchmark());
+  benchmarks.push_back({"seed", "step time of the design's scenes: tree against brute force, 24 against 48 balls",
+                        runSeedBenchmark});
   return benchmarks;
 }
 
