@@ -23,9 +23,12 @@ class ContactListener {
 };
 
 // Compares this step's touching pairs (sorted) with the previous step's.
+// `dormant` pairs (sorted, both bodies asleep or static) were touching when
+// they fell asleep: they stay touching without events, so sleeping does not
+// end a contact and waking does not begin it again.
 class ContactEventTracker {
  public:
-  void update(const std::vector<Contact>& contacts, ContactListener* listener);
+  void update(const std::vector<Contact>& contacts, const std::vector<BodyPair>& dormant, ContactListener* listener);
   const std::vector<BodyPair>& touchingPairs() const { return touching_; }
 
  private:

@@ -62,7 +62,8 @@ void World::step() {
   wakeTouchedBodies();
   resolveContacts();      // every response after every test is done
   integratePositions();
-  events_.update(contacts_, listener_);
+  correctPositions();     // sequential impulses: push out what still overlaps
+  events_.update(contacts_, dormantPairs(), listener_);
   updateSleep();
   freezeNonFiniteBodies();
   ++stepCount_;
@@ -99,12 +100,17 @@ void World::integrateVelocities() {
   }
 }
 
+// With sequential impulses the box covers the whole step's sweep, so a fast
+// body finds what lies ahead and gets speculative contacts before it arrives.
 void World::updateBroadPhase() {
+  const bool sweep = settings_.solver.kind == SolverKind::SequentialImpulse;
   for (BodyId id = 0; id < bodies_.size(); ++id) {
     if (!isMoving(id)) continue;
     const RigidBody& body = bodies_[id];
-    broadPhase_->moveProxy(proxies_[id], body.collider().worldBounds(body.transform()),
-                           body.linearVelocity() * settings_.dt);
+    const Vec3 displacement = body.linearVelocity() * settings_.dt;
+    Aabb box = body.collider().worldBounds(body.transform());
+    if (sweep) box = box.merged({box.min + displacement, box.max + displacement});
+    broadPhase_->moveProxy(proxies_[id], box, displacement);
   }
 }
 
@@ -113,18 +119,50 @@ void World::findContacts() {
   stats_.broadPhase = broadPhase_->stats();
   stats_.candidatePairs = static_cast<int>(pairs_.size());
   contacts_.clear();
+  std::swap(previousManifolds_, manifolds_);
+  manifolds_.clear();
   std::fill(touching_.begin(), touching_.end(), false);
+  const bool speculative = settings_.solver.kind == SolverKind::SequentialImpulse;
   for (const BodyPair& pair : pairs_) {
     const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
     const ContactResult result =
         collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase);
     stats_.narrowPhase.add(result);
-    if (result.status == ContactStatus::Separated) continue;
+    if (speculative) {
+      const double reach = speculativeDistance(pair);
+      if (result.status != ContactStatus::Separated || result.distance <= reach) addManifold(pair, result, reach);
+    }
+    // The solver holds resting bodies a hair apart (a speculative point aims
+    // at zero gap), so with it "touching" means within the linear slop.
+    const double touchingGap = speculative ? settings_.solver.linearSlop : 0.0;
+    if (result.status == ContactStatus::Separated && result.distance > touchingGap) continue;
     contacts_.push_back({pair.a, pair.b, result});
     touching_[pair.a] = touching_[pair.b] = true;
   }
+  stats_.manifolds = static_cast<int>(manifolds_.size());
   if (!settings_.skipStaticPairs) testStaticPairs();
   stats_.contacts = static_cast<int>(contacts_.size());
+}
+
+// How far apart two surfaces may be and still get a (speculative) contact:
+// the most they can close in one step, plus a few slops so resting contacts
+// are found before they touch.
+double World::speculativeDistance(const BodyPair& pair) const {
+  const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
+  const double reachA = a.collider().localBounds().halfExtents().norm();
+  const double reachB = b.collider().localBounds().halfExtents().norm();
+  const double closingSpeed = (b.linearVelocity() - a.linearVelocity()).norm() + a.angularVelocity().norm() * reachA +
+                              b.angularVelocity().norm() * reachB;
+  return 4.0 * settings_.solver.linearSlop + closingSpeed * settings_.dt;
+}
+
+void World::addManifold(const BodyPair& pair, const ContactResult& result, double reach) {
+  const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
+  ContactManifold& manifold = manifolds_.emplace_back();
+  manifold.a = pair.a;
+  manifold.b = pair.b;
+  buildManifold(a.collider(), a.transform(), b.collider(), b.transform(), result, reach, manifoldScratch_, manifold);
+  stats_.manifoldPoints += manifold.pointCount;
 }
 
 // The design's baseline without static-pair skipping: pairs of bodies that
@@ -154,11 +192,59 @@ void World::wakeTouchedBodies() {
 }
 
 void World::resolveContacts() {
-  for (const Contact& contact : contacts_) {
-    if (frozen_[contact.a] || frozen_[contact.b]) continue;
-    if (respondToContact(bodies_[contact.a], bodies_[contact.b], contact.result, settings_.response))
-      ++stats_.responses;
+  if (settings_.solver.kind == SolverKind::Seed) {
+    for (const Contact& contact : contacts_) {
+      if (frozen_[contact.a] || frozen_[contact.b]) continue;
+      if (respondToContact(bodies_[contact.a], bodies_[contact.b], contact.result, settings_.response))
+        ++stats_.responses;
+    }
+    return;
   }
+  movable_.resize(bodies_.size());
+  for (BodyId id = 0; id < bodies_.size(); ++id) movable_[id] = isMoving(id);
+  if (settings_.solver.warmStarting) warmStartFromPreviousStep();
+  solver_.solveVelocities(bodies_, movable_, manifolds_, settings_.dt, settings_.solver);
+  stats_.responses = static_cast<int>(manifolds_.size());
+}
+
+// Impulses of points that persist (same pair, same feature id) carry over.
+void World::warmStartFromPreviousStep() {
+  std::size_t previous = 0;
+  for (ContactManifold& manifold : manifolds_) {
+    const BodyPair pair{manifold.a, manifold.b};
+    while (previous < previousManifolds_.size() &&
+           BodyPair{previousManifolds_[previous].a, previousManifolds_[previous].b} < pair)
+      ++previous;
+    if (previous == previousManifolds_.size()) break;
+    const ContactManifold& old = previousManifolds_[previous];
+    if (BodyPair{old.a, old.b} != pair) continue;
+    for (int p = 0; p < manifold.pointCount; ++p) {
+      ManifoldPoint& point = manifold.points[p];
+      for (int q = 0; q < old.pointCount; ++q) {
+        if (old.points[q].featureId != point.featureId) continue;
+        point.normalImpulse = old.points[q].normalImpulse;
+        point.tangentImpulse[0] = old.points[q].tangentImpulse[0];
+        point.tangentImpulse[1] = old.points[q].tangentImpulse[1];
+        break;
+      }
+    }
+  }
+}
+
+void World::correctPositions() {
+  if (settings_.solver.kind != SolverKind::SequentialImpulse) return;
+  stats_.largestPenetration = solver_.solvePositions(bodies_, movable_, manifolds_, settings_.solver);
+}
+
+// Pairs that were touching and whose bodies are now all asleep (or static):
+// they still touch, silently.
+std::vector<BodyPair> World::dormantPairs() const {
+  std::vector<BodyPair> dormant;
+  for (const BodyPair& pair : events_.touchingPairs()) {
+    if (frozen_[pair.a] || frozen_[pair.b] || isMoving(pair.a) || isMoving(pair.b)) continue;
+    if (asleep_[pair.a] || asleep_[pair.b]) dormant.push_back(pair);
+  }
+  return dormant;
 }
 
 void World::integratePositions() {

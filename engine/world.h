@@ -11,9 +11,13 @@
 #include "engine/broadphase/broad_phase.h"
 #include "engine/collision_response.h"
 #include "engine/contact_events.h"
+#include "engine/contacts/contact_manifold.h"
+#include "engine/contacts/manifold_builder.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/math.h"
 #include "engine/narrowphase/contact.h"
+#include "engine/solver/sequential_impulse_solver.h"
+#include "engine/solver/solver_settings.h"
 
 namespace physdbg {
 
@@ -38,7 +42,8 @@ struct WorldSettings {
   double sleepAngularSpeed = 0.05;  // rad/s
   double timeToSleep = 0.5;         // s below both speeds before sleeping
 
-  ResponseSettings response;
+  SolverSettings solver;       // sequential impulses by default
+  ResponseSettings response;   // the seed solver's parameters
   NarrowPhaseOptions narrowPhase;
 };
 
@@ -57,6 +62,9 @@ struct StepStats {
   int staticPairsTested = 0;
   int contacts = 0;
   int responses = 0;
+  int manifolds = 0;
+  int manifoldPoints = 0;
+  double largestPenetration = 0;  // after the step, m
   NarrowPhaseCounters narrowPhase;
   BroadPhaseStats broadPhase;
 };
@@ -91,6 +99,8 @@ class World {
   const std::vector<NumericalFault>& numericalFaults() const { return faults_; }
   const StepStats& lastStepStats() const { return stats_; }
   const std::vector<Contact>& contacts() const { return contacts_; }
+  // Sequential-impulse solver only: this step's manifolds, speculative points included.
+  const std::vector<ContactManifold>& manifolds() const { return manifolds_; }
   const std::vector<BodyPair>& candidatePairs() const { return pairs_; }
   // The broad-phase tree, or null when the brute-force broad phase is used.
   const DynamicAabbTree* tree() const;
@@ -104,9 +114,14 @@ class World {
   void updateBroadPhase();
   void findContacts();
   void testStaticPairs();
+  void addManifold(const BodyPair& pair, const ContactResult& result, double speculativeDistance);
+  double speculativeDistance(const BodyPair& pair) const;
   void wakeTouchedBodies();
   void resolveContacts();
+  void warmStartFromPreviousStep();
   void integratePositions();
+  void correctPositions();
+  std::vector<BodyPair> dormantPairs() const;
   void updateSleep();
   void freezeNonFiniteBodies();
   void putToSleep(BodyId id);
@@ -121,6 +136,10 @@ class World {
   std::unique_ptr<BroadPhase> broadPhase_;
   std::vector<BodyPair> pairs_;
   std::vector<Contact> contacts_;
+  std::vector<ContactManifold> manifolds_, previousManifolds_;
+  ManifoldScratch manifoldScratch_;
+  SequentialImpulseSolver solver_;
+  std::vector<bool> movable_;
   ContactEventTracker events_;
   ContactListener* listener_ = nullptr;
   std::vector<NumericalFault> faults_;

@@ -4,6 +4,7 @@
 
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/sphere_collider.h"
+#include "scenes/design_scenes.h"
 #include "scenes/scene.h"
 
 namespace physdbg {
@@ -55,9 +56,11 @@ SceneDescription defaultScene() {
 }  // namespace
 
 const std::vector<BuiltinScene>& builtinScenes() {
-  static const std::vector<BuiltinScene> scenes = {
-      {"default", "boxes and spheres tumbling onto a ground slab", defaultScene},
-  };
+  static const std::vector<BuiltinScene> scenes = [] {
+    std::vector<BuiltinScene> all = {{"default", "boxes and spheres tumbling onto a ground slab", defaultScene}};
+    for (BuiltinScene& scene : designScenes()) all.push_back(std::move(scene));
+    return all;
+  }();
   return scenes;
 }
 

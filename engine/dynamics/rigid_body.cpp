@@ -136,7 +136,10 @@ void RigidBody::integrateVelocity(double dt, const Vec3& gravity) {
 void RigidBody::integrateAngularVelocity(double dt) {
   const Vec3 start = orientation_.conjugate() * angularVelocity_;
   const Mat3& inertia = localInertia_;
-  if (start.cross(inertia * start).squaredNorm() == 0.0) {
+  // With a rotation lock the body is constrained, not free: the torque-free
+  // equations do not apply, and the locks alone decide the spin.
+  const bool rotationLocked = lockRotation_[0] || lockRotation_[1] || lockRotation_[2];
+  if (rotationLocked || start.cross(inertia * start).squaredNorm() == 0.0) {
     orientationSpin_ = angularVelocity_;
     spinAfterGyroscopicStep_ = angularVelocity_;
     return;
@@ -177,6 +180,15 @@ void RigidBody::translate(const Vec3& delta) {
   for (int axis = 0; axis < 3; ++axis) {
     if (!lockTranslation_[axis]) position_[axis] += delta[axis];
   }
+}
+
+void RigidBody::rotate(const Vec3& rotation) {
+  if (isStatic_) return;
+  Vec3 allowed = rotation;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (lockRotation_[axis]) allowed[axis] = 0.0;
+  }
+  orientation_ = (rotationFromVector(allowed) * orientation_).normalized();
 }
 
 void RigidBody::applyLocks() {

@@ -52,6 +52,9 @@ class RigidBody {
   void setPosition(const Vec3& position) { position_ = position; }
   // Moves the body by `delta` except along locked translation axes.
   void translate(const Vec3& delta);
+  // Turns the body by a rotation vector (axis times angle, world frame),
+  // except about locked rotation axes.
+  void rotate(const Vec3& rotation);
   void setOrientation(const Quat& orientation) { orientation_ = orientation.normalized(); }
   void setLinearVelocity(const Vec3& velocity) { linearVelocity_ = velocity; }
   void setAngularVelocity(const Vec3& velocity) { angularVelocity_ = velocity; }

@@ -116,9 +116,6 @@ TEST(ContactEvents, BeginOnceStayEveryTouchingStepEndOnceInOrder) {
 // the pair should neither end while the ball sleeps nor begin again when it
 // wakes.
 TEST(ContactEvents, SleepingOnTheGroundDoesNotEndTheContact) {
-  GTEST_SKIP() << "engine bug: a sleeping body's proxy is inactive, so its pair with the static ground leaves "
-                  "findPairs and ContactEventTracker fires End when the ball falls asleep (still lying on the "
-                  "ground) and Begin again when it wakes: 2 begins and 2 ends instead of 1 and 1";
   const FallRestLift run = fallRestLift(true);
   EXPECT_EQ(count(run.events, RecordedEvent::Begin), 1);
   EXPECT_EQ(count(run.events, RecordedEvent::End), 1);
