@@ -52,17 +52,24 @@ const DynamicAabbTree* World::tree() const {
   return tree ? &tree->tree() : nullptr;
 }
 
-// The order of a step, as the design describes it.
+// The order of a step, as the design describes it. The seed solver follows
+// it literally; the sequential-impulse solver integrates velocities and
+// positions itself, in substeps around its contact solve.
 void World::step() {
   stats_ = StepStats{};
-  integrateVelocities();  // gravity, user forces, drag, gyroscopic term
+  const bool seed = settings_.solver.kind == SolverKind::Seed;
+  applyForces();  // gravity, user forces and impulses
+  if (seed) integrateVelocities();
   freezeNonFiniteBodies();
-  updateBroadPhase();     // fat boxes follow the bodies that moved
-  findContacts();         // candidate pairs, then the narrow phase on each
+  updateBroadPhase();  // fat boxes follow the bodies that moved
+  findContacts();      // candidate pairs, then the narrow phase on each
   wakeTouchedBodies();
-  resolveContacts();      // every response after every test is done
-  integratePositions();
-  correctPositions();     // sequential impulses: push out what still overlaps
+  if (seed) {
+    resolveContacts();  // every response after every test is done
+    integratePositions();
+  } else {
+    solveContacts();  // substeps: velocities, contacts, positions
+  }
   events_.update(contacts_, dormantPairs(), listener_);
   updateSleep();
   freezeNonFiniteBodies();
@@ -83,7 +90,7 @@ void World::putToSleep(BodyId id) {
   broadPhase_->setProxyActive(proxies_[id], false);
 }
 
-void World::integrateVelocities() {
+void World::applyForces() {
   for (BodyId id = 0; id < bodies_.size(); ++id) {
     RigidBody& body = bodies_[id];
     if (frozen_[id] || body.isStatic()) continue;
@@ -95,8 +102,14 @@ void World::integrateVelocities() {
       ++stats_.sleepingBodies;
       continue;
     }
-    body.integrateVelocity(settings_.dt, settings_.gravity);
+    body.beginStep(settings_.gravity);
     ++stats_.awakeBodies;
+  }
+}
+
+void World::integrateVelocities() {
+  for (BodyId id = 0; id < bodies_.size(); ++id) {
+    if (isMoving(id)) bodies_[id].integrateVelocity(settings_.dt);
   }
 }
 
@@ -107,7 +120,7 @@ void World::updateBroadPhase() {
   for (BodyId id = 0; id < bodies_.size(); ++id) {
     if (!isMoving(id)) continue;
     const RigidBody& body = bodies_[id];
-    const Vec3 displacement = body.linearVelocity() * settings_.dt;
+    const Vec3 displacement = (body.linearVelocity() + body.stepAcceleration() * settings_.dt) * settings_.dt;
     Aabb box = body.collider().worldBounds(body.transform());
     if (sweep) box = box.merged({box.min + displacement, box.max + displacement});
     broadPhase_->moveProxy(proxies_[id], box, displacement);
@@ -151,8 +164,9 @@ double World::speculativeDistance(const BodyPair& pair) const {
   const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
   const double reachA = a.collider().localBounds().halfExtents().norm();
   const double reachB = b.collider().localBounds().halfExtents().norm();
-  const double closingSpeed = (b.linearVelocity() - a.linearVelocity()).norm() + a.angularVelocity().norm() * reachA +
-                              b.angularVelocity().norm() * reachB;
+  const double closingSpeed = (b.linearVelocity() - a.linearVelocity()).norm() +
+                              (a.stepAcceleration().norm() + b.stepAcceleration().norm()) * settings_.dt +
+                              a.angularVelocity().norm() * reachA + b.angularVelocity().norm() * reachB;
   return 4.0 * settings_.solver.linearSlop + closingSpeed * settings_.dt;
 }
 
@@ -192,18 +206,18 @@ void World::wakeTouchedBodies() {
 }
 
 void World::resolveContacts() {
-  if (settings_.solver.kind == SolverKind::Seed) {
-    for (const Contact& contact : contacts_) {
-      if (frozen_[contact.a] || frozen_[contact.b]) continue;
-      if (respondToContact(bodies_[contact.a], bodies_[contact.b], contact.result, settings_.response))
-        ++stats_.responses;
-    }
-    return;
+  for (const Contact& contact : contacts_) {
+    if (frozen_[contact.a] || frozen_[contact.b]) continue;
+    if (respondToContact(bodies_[contact.a], bodies_[contact.b], contact.result, settings_.response))
+      ++stats_.responses;
   }
+}
+
+void World::solveContacts() {
   movable_.resize(bodies_.size());
   for (BodyId id = 0; id < bodies_.size(); ++id) movable_[id] = isMoving(id);
   if (settings_.solver.warmStarting) warmStartFromPreviousStep();
-  solver_.solveVelocities(bodies_, movable_, manifolds_, settings_.dt, settings_.solver);
+  stats_.largestPenetration = solver_.step(bodies_, movable_, manifolds_, settings_.dt, settings_.solver);
   stats_.responses = static_cast<int>(manifolds_.size());
 }
 
@@ -229,11 +243,6 @@ void World::warmStartFromPreviousStep() {
       }
     }
   }
-}
-
-void World::correctPositions() {
-  if (settings_.solver.kind != SolverKind::SequentialImpulse) return;
-  stats_.largestPenetration = solver_.solvePositions(bodies_, movable_, manifolds_, settings_.solver);
 }
 
 // Pairs that were touching and whose bodies are now all asleep (or static):

@@ -110,6 +110,7 @@ class World {
   void emitDebugDraw(debugdraw::LayerSet layers, debugdraw::Frame& frame) const;
 
  private:
+  void applyForces();
   void integrateVelocities();
   void updateBroadPhase();
   void findContacts();
@@ -118,9 +119,9 @@ class World {
   double speculativeDistance(const BodyPair& pair) const;
   void wakeTouchedBodies();
   void resolveContacts();
+  void solveContacts();
   void warmStartFromPreviousStep();
   void integratePositions();
-  void correctPositions();
   std::vector<BodyPair> dormantPairs() const;
   void updateSleep();
   void freezeNonFiniteBodies();

@@ -6,6 +6,7 @@
 #include "engine/colliders/sphere_collider.h"
 #include "scenes/design_scenes.h"
 #include "scenes/scene.h"
+#include "scenes/stacking_scenes.h"
 
 namespace physdbg {
 namespace {
@@ -59,6 +60,7 @@ const std::vector<BuiltinScene>& builtinScenes() {
   static const std::vector<BuiltinScene> scenes = [] {
     std::vector<BuiltinScene> all = {{"default", "boxes and spheres tumbling onto a ground slab", defaultScene}};
     for (BuiltinScene& scene : designScenes()) all.push_back(std::move(scene));
+    for (BuiltinScene& scene : stackingScenes()) all.push_back(std::move(scene));
     return all;
   }();
   return scenes;

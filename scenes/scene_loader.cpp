@@ -247,6 +247,25 @@ void readBody(const SceneReader& reader, const json& value, const std::string& p
       }
 }
 
+void readSolver(const SceneReader& reader, const json& value, const std::string& path, SolverSettings& solver) {
+  reader.requireObject(value, path);
+  reader.checkKeys(value, path, {"kind", "iterations", "substeps"});
+  if (value.contains("kind")) {
+    const std::string kind = reader.string(value["kind"], path + ".kind");
+    if (kind == "seed") solver.kind = SolverKind::Seed;
+    else if (kind == "sequential_impulse") solver.kind = SolverKind::SequentialImpulse;
+    else reader.fail(path + ".kind", "must be \"seed\" or \"sequential_impulse\", got \"" + kind + "\"");
+  }
+  if (value.contains("iterations")) {
+    solver.velocityIterations = reader.positiveInteger(value["iterations"], path + ".iterations");
+    if (solver.velocityIterations > 1000) reader.fail(path + ".iterations", "must be at most 1000");
+  }
+  if (value.contains("substeps")) {
+    solver.substeps = reader.positiveInteger(value["substeps"], path + ".substeps");
+    if (solver.substeps > 1000) reader.fail(path + ".substeps", "must be at most 1000");
+  }
+}
+
 SceneCamera readCamera(const SceneReader& reader, const json& value, const std::string& path) {
   reader.requireObject(value, path);
   reader.checkKeys(value, path, {"eye", "target", "fov", "orthographic"});
@@ -272,7 +291,7 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
   }
   reader.requireObject(root, "");
   reader.checkKeys(root, "", {"name", "description", "gravity", "dt", "steps", "bodies", "camera", "layers",
-                              "allow_sleep", "broadphase"});
+                              "allow_sleep", "broadphase", "solver"});
   SceneDescription scene;
   scene.name = std::filesystem::path(sourceName).stem().string();
   if (root.contains("name")) scene.name = reader.string(root["name"], "name");
@@ -287,6 +306,7 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
     else if (kind == "brute_force") scene.world.broadPhase = BroadPhaseKind::BruteForce;
     else reader.fail("broadphase", "must be \"tree\" or \"brute_force\", got \"" + kind + "\"");
   }
+  if (root.contains("solver")) readSolver(reader, root["solver"], "solver", scene.world.solver);
   if (root.contains("camera")) scene.camera = readCamera(reader, root["camera"], "camera");
   if (root.contains("layers")) {
     scene.layers = reader.string(root["layers"], "layers");

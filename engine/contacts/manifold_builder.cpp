@@ -10,6 +10,8 @@ namespace {
 // otherwise (edge against edge, a vertex into a face at an angle) the single
 // narrow-phase point is the contact.
 constexpr double minimumFaceAlignment = 0.95;
+// Metres; far below any visible offset, far above double round-off at 1e5 m.
+constexpr double clipTolerance = 1e-6;
 
 std::uint32_t mixTags(std::uint32_t a, std::uint32_t b, std::uint32_t plane) {
   return (0x800u | ((a * 31u + b) * 7u + plane)) & 0xFFFu;
@@ -34,9 +36,15 @@ void singlePoint(const Transform& ta, const Transform& tb, const ContactResult& 
 }
 
 // Sutherland-Hodgman against one side plane; segments and points clip too.
+// Points within `tolerance` outside the plane count as inside: a box resting
+// squarely on another has its corners exactly on the side planes, and without
+// the tolerance round-off would turn them into intersection points one step
+// and back the next, changing their feature ids and losing warm starting.
 void clipAgainstPlane(const std::vector<ManifoldScratch::TaggedPoint>& input, const Vec3& planeNormal,
-                      double planeOffset, std::uint32_t planeIndex, std::vector<ManifoldScratch::TaggedPoint>& output) {
+                      double planeOffset, double tolerance, std::uint32_t planeIndex,
+                      std::vector<ManifoldScratch::TaggedPoint>& output) {
   output.clear();
+  planeOffset += tolerance * planeNormal.norm();
   const std::size_t count = input.size();
   if (count == 1) {
     if (input[0].point.dot(planeNormal) <= planeOffset) output.push_back(input[0]);
@@ -127,7 +135,8 @@ void buildManifold(const Collider& a, const Transform& ta, const Collider& b, co
   for (std::size_t i = 0; i < sides && !scratch.polygon.empty(); ++i) {
     const Vec3& start = reference.points[i];
     const Vec3 sideNormal = (reference.points[(i + 1) % sides] - start).cross(faceNormal);
-    clipAgainstPlane(scratch.polygon, sideNormal, sideNormal.dot(start), static_cast<std::uint32_t>(i), scratch.clipped);
+    clipAgainstPlane(scratch.polygon, sideNormal, sideNormal.dot(start), clipTolerance, static_cast<std::uint32_t>(i),
+                     scratch.clipped);
     std::swap(scratch.polygon, scratch.clipped);
   }
 

@@ -104,18 +104,20 @@ void RigidBody::applyImpulseAtPoint(const Vec3& impulse, const Vec3& point) {
 }
 
 void RigidBody::integrateVelocity(double dt, const Vec3& gravity) {
+  beginStep(gravity);
+  integrateVelocity(dt);
+}
+
+// Forces (and gravity) become this step's constant accelerations, so a step
+// cut into substeps applies them evenly; impulses act once, right away.
+void RigidBody::beginStep(const Vec3& gravity) {
   if (isStatic_) return;
-  Vec3 acceleration = forceAccumulator_ * inverseMass_ + accelerationAccumulator_;
-  if (useGravity_) acceleration += gravity;
-  linearVelocity_ += acceleration * dt + velocityChange_;
-  linearVelocity_ /= 1.0 + linearDrag_ * dt;
-
-  integrateAngularVelocity(dt);
+  stepAcceleration_ = forceAccumulator_ * inverseMass_ + accelerationAccumulator_;
+  if (useGravity_) stepAcceleration_ += gravity;
   const Mat3 inverseInertia = worldInverseInertia();
-  angularVelocity_ += inverseInertia * (torqueAccumulator_ * dt + angularMomentumChange_) +
-                      angularAccelerationAccumulator_ * dt + angularVelocityChange_;
-  angularVelocity_ /= 1.0 + angularDrag_ * dt;
-
+  stepAngularAcceleration_ = inverseInertia * torqueAccumulator_ + angularAccelerationAccumulator_;
+  linearVelocity_ += velocityChange_;
+  angularVelocity_ += inverseInertia * angularMomentumChange_ + angularVelocityChange_;
   applyLocks();
   forceAccumulator_.setZero();
   accelerationAccumulator_.setZero();
@@ -124,6 +126,16 @@ void RigidBody::integrateVelocity(double dt, const Vec3& gravity) {
   angularAccelerationAccumulator_.setZero();
   angularMomentumChange_.setZero();
   angularVelocityChange_.setZero();
+}
+
+void RigidBody::integrateVelocity(double dt) {
+  if (isStatic_) return;
+  linearVelocity_ += stepAcceleration_ * dt;
+  linearVelocity_ /= 1.0 + linearDrag_ * dt;
+  integrateAngularVelocity(dt);
+  angularVelocity_ += stepAngularAcceleration_ * dt;
+  angularVelocity_ /= 1.0 + angularDrag_ * dt;
+  applyLocks();
 }
 
 // Torque-free part of Euler's equations, dPi/dt = Pi x w with Pi = I w in the

@@ -82,8 +82,14 @@ class RigidBody {
 
   // Semi-implicit Euler, first half: accumulated forces and impulses (and
   // gravity, when used) change the velocities, then drag, then axis locks.
-  // Clears the accumulators.
+  // Clears the accumulators. Same as beginStep then integrateVelocity(dt).
   void integrateVelocity(double dt, const Vec3& gravity);
+  // Consumes the accumulators: impulses change the velocities now, forces and
+  // gravity become the accelerations that integrateVelocity(h) applies.
+  void beginStep(const Vec3& gravity);
+  // One (sub)step of the velocity half with this step's accelerations.
+  void integrateVelocity(double dt);
+  const Vec3& stepAcceleration() const { return stepAcceleration_; }
   // Second half: position and orientation move with the new velocities.
   void integratePosition(double dt);
 
@@ -117,6 +123,9 @@ class RigidBody {
   Vec3 angularAccelerationAccumulator_ = Vec3::Zero();
   Vec3 angularMomentumChange_ = Vec3::Zero();    // N m s
   Vec3 angularVelocityChange_ = Vec3::Zero();
+
+  Vec3 stepAcceleration_ = Vec3::Zero();         // m/s^2, from beginStep
+  Vec3 stepAngularAcceleration_ = Vec3::Zero();  // rad/s^2, world, from beginStep
 
   // Set by the gyroscopic step, consumed by integratePosition (see there).
   Vec3 orientationSpin_ = Vec3::Zero();

@@ -1,11 +1,12 @@
 #pragma once
-// Sequential impulses over contact manifolds (Gauss-Seidel on velocities):
-// warm-started normal and Coulomb friction impulses, restitution applied once
-// after the iterations, speculative points that let a body approach exactly up
-// to a surface (no tunnelling at 200 m/s), then a few position iterations that
-// push remaining penetration out directly. Position error never feeds the
-// velocities, so removing overlap adds no kinetic energy (no popping, no
-// bounce out of a 25% overlap).
+// Sequential impulses over contact manifolds with soft contacts and substeps
+// (the "soft step" scheme of Box2D v3, written from its description): each
+// substep integrates velocities, warm-starts and solves every contact point
+// (normal with a soft push-out of penetration, Coulomb friction clamped by the
+// normal impulse), integrates positions, then relaxes the contacts without
+// the push so it leaves no velocity behind. Restitution is applied once at
+// the end. Speculative points (still apart) let a body close exactly its gap:
+// no tunnelling, and no energy from position correction.
 #include <vector>
 
 #include "engine/contacts/contact_manifold.h"
@@ -16,38 +17,39 @@ namespace physdbg {
 
 class SequentialImpulseSolver {
  public:
-  // `movable[i]` false makes body i immovable for this step (static, asleep
-  // or frozen). Impulses already in the manifolds warm-start the solve.
-  void solveVelocities(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-                       std::vector<ContactManifold>& manifolds, double dt, const SolverSettings& settings);
-
-  // After positions are integrated: returns the largest remaining penetration.
-  double solvePositions(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-                        const std::vector<ContactManifold>& manifolds, const SolverSettings& settings);
+  // Advances every movable body by dt (velocities and positions) while
+  // solving the manifolds. `movable[i]` false: body i is immovable this step
+  // (static, asleep or frozen). Impulses in the manifolds warm-start the solve
+  // and hold the final ones afterwards. Returns the largest penetration left.
+  double step(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+              std::vector<ContactManifold>& manifolds, double dt, const SolverSettings& settings);
 
  private:
   struct PointConstraint {
-    Vec3 armA, armB;
+    Vec3 armA, armB;  // from the centres of mass at the start of the step
     Vec3 tangent[2];
     double normalMass = 0, tangentMass[2] = {0, 0};
     double friction = 0;
-    double targetVelocity = 0;     // normal velocity the constraint aims for (speculative approach)
-    double approachVelocity = 0;   // normal velocity before the solve, for restitution
+    double approachVelocity = 0;  // normal velocity before the solve, for restitution
     double restitution = 0;
+    double largestImpulse = 0;    // did this point ever push (restitution needs it)
   };
-  struct BodyState {
-    double inverseMass = 0;
-    Mat3 inverseInertia = Mat3::Zero();
+  struct Softness {
+    double biasRate = 0, massScale = 1, impulseScale = 0;
   };
 
-  void prepare(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-               std::vector<ContactManifold>& manifolds, double dt, const SolverSettings& settings);
+  void prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+               std::vector<ContactManifold>& manifolds, const SolverSettings& settings);
   void warmStart(std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds);
-  void relax(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds);
-  void applyRestitution(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
-                        const SolverSettings& settings);
+  void solve(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds, double substep,
+             const Softness& softness, bool useBias, const SolverSettings& settings);
+  void applyRestitution(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds);
+  double largestPenetration(const std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds) const;
+  void applyImpulse(std::vector<RigidBody>& bodies, const ContactManifold& manifold, const PointConstraint& constraint,
+                    const Vec3& impulse);
 
-  std::vector<BodyState> states_;
+  std::vector<double> inverseMass_;
+  std::vector<Mat3> inverseInertia_;
   std::vector<PointConstraint> constraints_;  // maxPoints per manifold
 };
 

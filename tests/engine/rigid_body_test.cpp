@@ -25,16 +25,21 @@ TEST(RigidBody, FreeFallFollowsTheSemiImplicitEulerRecurrence) {
   definition.linearVelocity = Vec3(0.5, 3, 0);
   const BodyId id = world.addBody(definition);
 
+  // The sequential-impulse solver integrates in substeps of h = dt / substeps.
+  const int substeps = settings.solver.substeps;
+  const double h = settings.dt / substeps;
   Vec3 position = definition.position, velocity = definition.linearVelocity;
   for (int step = 1; step <= 600; ++step) {
     world.step();
-    velocity += settings.gravity * settings.dt;
-    position += velocity * settings.dt;
+    for (int substep = 0; substep < substeps; ++substep) {
+      velocity += settings.gravity * h;
+      position += velocity * h;
+    }
     ASSERT_EQ(world.body(id).linearVelocity(), velocity) << "step " << step;
     ASSERT_EQ(world.body(id).position(), position) << "step " << step;
   }
-  // Closed form of the recurrence: x_n = x0 + n dt v0 + g dt^2 n (n + 1) / 2.
-  const double n = 600, dt = settings.dt;
+  // Closed form of the recurrence: x_n = x0 + n h v0 + g h^2 n (n + 1) / 2.
+  const double n = 600.0 * substeps, dt = h;
   const Vec3 expected = definition.position + n * dt * definition.linearVelocity + settings.gravity * dt * dt * n * (n + 1) / 2;
   EXPECT_NEAR((world.body(id).position() - expected).norm(), 0.0, 1e-12 * expected.norm());
 }
@@ -68,9 +73,12 @@ TEST(RigidBody, DragDecaysVelocityAsTheRecurrenceSays) {
   definition.angularDrag = 2.0;
   const BodyId id = world.addBody(definition);
   for (int step = 0; step < 100; ++step) world.step();
-  // v_n = v_0 / (1 + c dt)^n, which tends to v_0 exp(-c t) as dt -> 0.
-  EXPECT_NEAR(world.body(id).linearVelocity().x(), 10 / std::pow(1 + 0.5 * 0.01, 100), 1e-12);
-  EXPECT_NEAR(world.body(id).angularVelocity().z(), 4 / std::pow(1 + 2.0 * 0.01, 100), 1e-12);
+  // v_n = v_0 / (1 + c h)^n over n substeps of h, which tends to
+  // v_0 exp(-c t) as h -> 0.
+  const int substeps = settings.solver.substeps;
+  const double h = 0.01 / substeps;
+  EXPECT_NEAR(world.body(id).linearVelocity().x(), 10 / std::pow(1 + 0.5 * h, 100 * substeps), 1e-12);
+  EXPECT_NEAR(world.body(id).angularVelocity().z(), 4 / std::pow(1 + 2.0 * h, 100 * substeps), 1e-12);
   EXPECT_NEAR(world.body(id).linearVelocity().x(), 10 * std::exp(-0.5), 10 * 0.5 * 0.5 * 0.01);
 }
 

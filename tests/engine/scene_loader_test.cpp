@@ -176,6 +176,12 @@ TEST(SceneLoader, CapsuleConvexAndWorldKeys) {
       {"shape": {"convex": {"points": [[0,0,0],[2,0,0],[0,2,0],[0,0,2],[2,0,0]]}}, "position": [10, 0, 0]}]})",
                                             "shapes.json");
   EXPECT_FALSE(scene.world.allowSleep);
+  EXPECT_EQ(scene.world.solver.kind, SolverKind::SequentialImpulse);
+  const SceneDescription seed =
+      parseScene(R"({"solver": {"kind": "seed", "iterations": 3, "substeps": 8}, "bodies": []})", "s.json");
+  EXPECT_EQ(seed.world.solver.kind, SolverKind::Seed);
+  EXPECT_EQ(seed.world.solver.velocityIterations, 3);
+  EXPECT_EQ(seed.world.solver.substeps, 8);
   EXPECT_EQ(scene.world.broadPhase, BroadPhaseKind::BruteForce);
   ASSERT_EQ(scene.bodies.size(), 2u);
   EXPECT_EQ(scene.bodies[0].collider->kind(), ColliderKind::Capsule);
@@ -202,6 +208,9 @@ TEST(SceneLoader, RejectsBadCapsulesHullsAndWorldKeys) {
             std::string::npos);
   EXPECT_NE(message(R"({"broadphase": "octree", "bodies": []})").find("broadphase"), std::string::npos);
   EXPECT_NE(message(R"({"allow_sleep": "yes", "bodies": []})").find("allow_sleep"), std::string::npos);
+  EXPECT_NE(message(R"({"solver": {"kind": "pgs"}, "bodies": []})").find("solver.kind"), std::string::npos);
+  EXPECT_NE(message(R"({"solver": {"iterations": 0}, "bodies": []})").find("solver.iterations"), std::string::npos);
+  EXPECT_NE(message(R"({"solver": {"warm": true}, "bodies": []})").find("solver.warm"), std::string::npos);
 }
 
 }  // namespace
