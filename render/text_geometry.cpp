@@ -1,5 +1,6 @@
 #include "render/text_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
