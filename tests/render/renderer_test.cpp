@@ -153,6 +153,13 @@ TEST_F(RendererTest, TextIsPixelAlignedWithADarkOutline) {
   EXPECT_TRUE(isBackground(pixelAt(image, kWidth - 1, kHeight - 1)));
 }
 
+TEST_F(RendererTest, NonAsciiTextDrawsQuestionMarks) {
+  Frame accented, questions;
+  accented.texts.push_back({10, 10, 2, "caf\xC3\xA9\t", Color{1, 1, 1, 1}});  // UTF-8 e-acute, then a tab
+  questions.texts.push_back({10, 10, 2, "caf???", Color{1, 1, 1, 1}});
+  EXPECT_EQ(renderer.render(accented, Camera{}).rgba, renderer.render(questions, Camera{}).rgba);
+}
+
 TEST_F(RendererTest, RenderingTwiceGivesIdenticalBytes) {
   Frame frame = oneBox(Vector3d::Zero(), kRed);
   frame.spheres.push_back({Vector3d(2, 0, 0), Quaterniond::Identity(), 0.8, kGreen});
