@@ -1,6 +1,7 @@
 #include "render/frame_batches.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 #include <string>

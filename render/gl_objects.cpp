@@ -13,29 +13,20 @@ void deleteFramebuffer(GLuint name) { glDeleteFramebuffers(1, &name); }
 void deleteRenderbuffer(GLuint name) { glDeleteRenderbuffers(1, &name); }
 }  // namespace detail
 
-GlBuffer createBuffer() {
+namespace {
+
+GLuint generateName(void (*generate)(GLsizei, GLuint*)) {
   GLuint name = 0;
-  glGenBuffers(1, &name);
-  return GlBuffer(name);
+  generate(1, &name);
+  return name;
 }
 
-GlVertexArray createVertexArray() {
-  GLuint name = 0;
-  glGenVertexArrays(1, &name);
-  return GlVertexArray(name);
-}
+}  // namespace
 
-GlFramebuffer createFramebuffer() {
-  GLuint name = 0;
-  glGenFramebuffers(1, &name);
-  return GlFramebuffer(name);
-}
-
-GlRenderbuffer createRenderbuffer() {
-  GLuint name = 0;
-  glGenRenderbuffers(1, &name);
-  return GlRenderbuffer(name);
-}
+GlBuffer createBuffer() { return GlBuffer(generateName(glGenBuffers)); }
+GlVertexArray createVertexArray() { return GlVertexArray(generateName(glGenVertexArrays)); }
+GlFramebuffer createFramebuffer() { return GlFramebuffer(generateName(glGenFramebuffers)); }
+GlRenderbuffer createRenderbuffer() { return GlRenderbuffer(generateName(glGenRenderbuffers)); }
 
 namespace {
 

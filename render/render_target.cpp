@@ -1,6 +1,6 @@
 #include "render/render_target.h"
 
-#include <cstring>
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -57,12 +57,14 @@ Image RenderTarget::read() const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.get());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   const std::size_t rowBytes = static_cast<std::size_t>(width_) * 4;
-  std::vector<std::uint8_t> bottomUp(rowBytes * height_);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
+  // Read straight into the image and flip in place: one 3.7 MB buffer at
+  // 1280x720 instead of two, which halves the page faults and copies.
+  Image image{width_, height_, std::vector<std::uint8_t>(rowBytes * height_)};
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
   checkGlError("reading pixels");
-  Image image{width_, height_, std::vector<std::uint8_t>(bottomUp.size())};
-  for (int row = 0; row < height_; ++row)  // GL's first row is the bottom one
-    std::memcpy(image.rgba.data() + row * rowBytes, bottomUp.data() + (height_ - 1 - row) * rowBytes, rowBytes);
+  for (int row = 0; row < height_ / 2; ++row)  // GL's first row is the bottom one
+    std::swap_ranges(image.rgba.begin() + row * rowBytes, image.rgba.begin() + (row + 1) * rowBytes,
+                     image.rgba.begin() + (height_ - 1 - row) * rowBytes);
   return image;
 }
 

@@ -1,5 +1,6 @@
 #include "render/text_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -17,7 +18,12 @@ struct Quad {
 // stb_easy_font writes 4 vertices of 16 bytes (x, y, z floats, 4 colour bytes)
 // per quad, on average ~270 bytes per character; 1 KiB per character is ample.
 std::vector<Quad> glyphQuads(const std::string& text) {
-  std::vector<char> characters(text.begin(), text.end());
+  // The font covers printable ASCII only and indexes its table by character
+  // code, so anything else (tabs, UTF-8 bytes) becomes '?' rather than a wild read.
+  std::vector<char> characters;
+  characters.reserve(text.size() + 1);
+  for (char character : text)
+    characters.push_back(character == '\n' || (character >= 32 && character <= 126) ? character : '?');
   characters.push_back('\0');
   std::vector<float> buffer((text.size() + 1) * 256);
   const int quadCount = stb_easy_font_print(0, 0, characters.data(), nullptr, buffer.data(),

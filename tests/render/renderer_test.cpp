@@ -2,6 +2,7 @@
 
 #include <functional>
 #include <memory>
+#include <set>
 #include <stdexcept>
 
 #include "render/renderer.h"
@@ -152,6 +153,13 @@ TEST_F(RendererTest, TextIsPixelAlignedWithADarkOutline) {
   EXPECT_TRUE(isBackground(pixelAt(image, kWidth - 1, kHeight - 1)));
 }
 
+TEST_F(RendererTest, NonAsciiTextDrawsQuestionMarks) {
+  Frame accented, questions;
+  accented.texts.push_back({10, 10, 2, "caf\xC3\xA9\t", Color{1, 1, 1, 1}});  // UTF-8 e-acute, then a tab
+  questions.texts.push_back({10, 10, 2, "caf???", Color{1, 1, 1, 1}});
+  EXPECT_EQ(renderer.render(accented, Camera{}).rgba, renderer.render(questions, Camera{}).rgba);
+}
+
 TEST_F(RendererTest, RenderingTwiceGivesIdenticalBytes) {
   Frame frame = oneBox(Vector3d::Zero(), kRed);
   frame.spheres.push_back({Vector3d(2, 0, 0), Quaterniond::Identity(), 0.8, kGreen});
@@ -202,6 +210,24 @@ TEST_F(RendererTest, ConvexMeshIsDrawnAndReuploadedWhenItChanges) {
   half->indices.erase(half->indices.begin(), half->indices.begin() + 12);
   frame.meshes[0].mesh = half;
   EXPECT_NE(renderer.render(frame, camera).rgba, first.rgba);
+}
+
+TEST(RendererMultisampling, IsRepeatableAndBlendsEdges) {
+  const Frame frame = oneBox(Vector3d::Zero(), kRed);
+  const Camera camera = frameBoundsCamera(frameBounds(frame), double(kWidth) / kHeight);
+  Renderer plain(RendererOptions{kWidth, kHeight, 0});
+  Renderer smooth(RendererOptions{kWidth, kHeight, 4});
+  const Image aliased = plain.render(frame, camera);
+  const Image first = smooth.render(frame, camera);
+  EXPECT_EQ(smooth.render(frame, camera).rgba, first.rgba);
+  // Edge pixels mix box and background: more distinct colours than without MSAA.
+  auto distinctColours = [](const Image& image) {
+    std::set<std::array<int, 4>> colours;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) colours.insert(pixelAt(image, x, y));
+    return colours.size();
+  };
+  EXPECT_GT(distinctColours(first), distinctColours(aliased) + 10);
 }
 
 TEST(RendererInput, BadOptionsAndPrimitivesAreRejected) {
