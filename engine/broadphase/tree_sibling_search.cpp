@@ -21,11 +21,29 @@ struct LaterCandidateFirst {
 
 }  // namespace
 
-int DynamicAabbTree::findBestSiblingBranchAndBound(const Aabb& box) {
+// Full cost of making `sibling` the new leaf's sibling, walking its ancestors.
+double DynamicAabbTree::insertionCost(const Aabb& box, int sibling) const {
+  double cost = nodes_[sibling].box.merged(box).surfaceArea();
+  for (int node = nodes_[sibling].parent; node != nullNode; node = nodes_[node].parent) {
+    cost += nodes_[node].box.merged(box).surfaceArea() - nodes_[node].box.surfaceArea();
+  }
+  return cost;
+}
+
+int DynamicAabbTree::findBestSiblingBranchAndBound(const Aabb& box, int hint) {
   const double leafArea = box.surfaceArea();
   int best = root_;
   const double rootDirect = nodes_[root_].box.merged(box).surfaceArea();
   double bestCost = rootDirect;
+  // A moved leaf usually belongs near its old place: starting from that cost
+  // prunes most of the search. The result is still the exact optimum.
+  if (hint != nullNode && hint != root_) {
+    const double hintCost = insertionCost(box, hint);
+    if (hintCost < bestCost) {
+      bestCost = hintCost;
+      best = hint;
+    }
+  }
   heap_.clear();
   // Queued entries are internal nodes whose own cost is already counted; the
   // key bounds their children's subtrees: inherited growth including the
