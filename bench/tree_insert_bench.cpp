@@ -18,6 +18,30 @@ namespace {
 
 double millionsPerSecond(long long operations, double ms) { return ms > 0.0 ? operations / ms / 1000.0 : 0.0; }
 
+struct TreeFigures {
+  double insertMs, removeMs, sar, topDownSar;
+  int height;
+};
+
+TreeFigures measureOurs(const std::vector<Aabb>& boxes, const std::vector<int>& removalOrder,
+                        const DynamicAabbTreeOptions& options) {
+  DynamicAabbTree tree(options);
+  std::vector<int> proxies(boxes.size());
+  TreeFigures figures{};
+  figures.insertMs = millisecondsOf([&] {
+    for (std::size_t i = 0; i < boxes.size(); ++i) proxies[i] = tree.createProxy(boxes[i], 0);
+  });
+  figures.sar = tree.surfaceAreaRatio();
+  figures.height = tree.height();
+  DynamicAabbTree rebuilt = tree;
+  rebuilt.rebuildTopDown();
+  figures.topDownSar = rebuilt.surfaceAreaRatio();
+  figures.removeMs = millisecondsOf([&] {
+    for (const int index : removalOrder) tree.destroyProxy(proxies[index]);
+  });
+  return figures;
+}
+
 void runInsertRemove(const std::string& name, const std::vector<Aabb>& boxes, const BenchSink& sink) {
   std::vector<int> removalOrder(boxes.size());
   std::iota(removalOrder.begin(), removalOrder.end(), 0);
@@ -25,18 +49,13 @@ void runInsertRemove(const std::string& name, const std::vector<Aabb>& boxes, co
 
   DynamicAabbTreeOptions options;
   options.margin = 0.0;  // btDbvt stores exact boxes
-  DynamicAabbTree tree(options);
-  std::vector<int> proxies(boxes.size());
-  const double insertMs = millisecondsOf([&] {
-    for (std::size_t i = 0; i < boxes.size(); ++i) proxies[i] = tree.createProxy(boxes[i], 0);
-  });
-  const double sar = tree.surfaceAreaRatio();
-  const int height = tree.height();
-  DynamicAabbTree rebuilt = tree;
-  rebuilt.rebuildTopDown();
-  const double removeMs = millisecondsOf([&] {
-    for (const int index : removalOrder) tree.destroyProxy(proxies[index]);
-  });
+  const TreeFigures ours = measureOurs(boxes, removalOrder, options);
+  options.insertion = InsertionMethod::Greedy;
+  const TreeFigures greedy = measureOurs(boxes, removalOrder, options);
+  const double insertMs = ours.insertMs;
+  const double removeMs = ours.removeMs;
+  const double sar = ours.sar;
+  const int height = ours.height;
   const auto peer = bulletDbvtInsertRemove(boxes, removalOrder);
   const long long operations = 2LL * static_cast<long long>(boxes.size());
   nlohmann::json record = benchRecord(name, static_cast<long long>(boxes.size()), insertMs + removeMs,
@@ -47,8 +66,12 @@ void runInsertRemove(const std::string& name, const std::vector<Aabb>& boxes, co
   record["ours_remove_mops"] = millionsPerSecond(static_cast<long long>(boxes.size()), removeMs);
   record["sar"] = sar;
   record["height"] = height;
-  record["topdown_sar"] = rebuilt.surfaceAreaRatio();
-  record["sar_vs_topdown"] = sar / rebuilt.surfaceAreaRatio();
+  record["topdown_sar"] = ours.topDownSar;
+  record["sar_vs_topdown"] = sar / ours.topDownSar;
+  record["greedy_mops"] = millionsPerSecond(operations, greedy.insertMs + greedy.removeMs);
+  record["greedy_insert_mops"] = millionsPerSecond(static_cast<long long>(boxes.size()), greedy.insertMs);
+  record["greedy_sar_vs_topdown"] = greedy.sar / greedy.topDownSar;
+  record["greedy_height"] = greedy.height;
   if (peer) {
     record["peer_mops"] = millionsPerSecond(operations, peer->insertMs + peer->removeMs);
     record["peer_insert_mops"] = millionsPerSecond(static_cast<long long>(boxes.size()), peer->insertMs);

@@ -88,25 +88,25 @@ bool DynamicAabbTree::moveProxy(int proxy, const Aabb& tightBox, const Vec3& dis
   requireValidBox(tightBox, "moveProxy");
   if (!displacement.allFinite()) throw std::invalid_argument("DynamicAabbTree::moveProxy: displacement not finite");
   if (nodes_[proxy].box.contains(tightBox)) return false;
-  removeLeaf(proxy);
+  const int formerSibling = removeLeaf(proxy);
   Aabb fat = tightBox.enlarged(options_.margin);
   // Stretch only towards the motion: a body keeps going the way it went.
   const Vec3 ahead = options_.velocityPrediction * displacement;
   fat.min += ahead.cwiseMin(Vec3::Zero());
   fat.max += ahead.cwiseMax(Vec3::Zero());
   nodes_[proxy].box = fat;
-  insertLeaf(proxy);
+  insertLeaf(proxy, formerSibling);
   return true;
 }
 
-void DynamicAabbTree::insertLeaf(int leaf) {
+void DynamicAabbTree::insertLeaf(int leaf, int hint) {
   if (root_ == nullNode) {
     root_ = leaf;
     nodes_[leaf].parent = nullNode;
     return;
   }
   const Aabb& box = nodes_[leaf].box;
-  const int sibling = options_.insertion == InsertionMethod::BranchAndBound ? findBestSiblingBranchAndBound(box)
+  const int sibling = options_.insertion == InsertionMethod::BranchAndBound ? findBestSiblingBranchAndBound(box, hint)
                                                                             : findBestSiblingGreedy(box);
   const int oldParent = nodes_[sibling].parent;
   const int newParent = allocateNode();
@@ -128,10 +128,10 @@ void DynamicAabbTree::insertLeaf(int leaf) {
   refitAncestors(newParent);
 }
 
-void DynamicAabbTree::removeLeaf(int leaf) {
+int DynamicAabbTree::removeLeaf(int leaf) {
   if (leaf == root_) {
     root_ = nullNode;
-    return;
+    return nullNode;
   }
   const int parent = nodes_[leaf].parent;
   const int grandParent = nodes_[parent].parent;
@@ -147,6 +147,7 @@ void DynamicAabbTree::removeLeaf(int leaf) {
   freeNode(parent);
   nodes_[leaf].parent = nullNode;
   shrinkAncestors(grandParent);
+  return sibling;
 }
 
 // After a removal boxes can only shrink; once one stays the same, so do all above

@@ -101,9 +101,11 @@ class DynamicAabbTree {
 
   int allocateNode();
   void freeNode(int node);
-  void insertLeaf(int leaf);
-  void removeLeaf(int leaf);
-  int findBestSiblingBranchAndBound(const Aabb& box);
+  // hint: a node near where the leaf should go (its old sibling on a move), or nullNode.
+  void insertLeaf(int leaf, int hint = nullNode);
+  int removeLeaf(int leaf);  // returns the removed leaf's former sibling, or nullNode
+  int findBestSiblingBranchAndBound(const Aabb& box, int hint);
+  double insertionCost(const Aabb& box, int sibling) const;
   int findBestSiblingGreedy(const Aabb& box) const;
   void refitAncestors(int node);
   void shrinkAncestors(int node);

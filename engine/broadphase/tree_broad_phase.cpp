@@ -58,18 +58,18 @@ void TreeBroadPhase::setProxyActive(int proxy, bool active) {
 }
 
 // Collects the eligible pairs of one changed proxy. A pair of two changed
-// proxies is taken from the lower id's query only.
-void TreeBroadPhase::queryChanged(int proxy) {
+// proxies is taken from the lower id's query only. Returns the nodes visited.
+long long TreeBroadPhase::queryChanged(int proxy) {
   const Aabb& box = tree_.box(proxy);
   const bool drives = drivesPairs(proxy);
   const std::uint32_t body = proxies_[proxy].body;
+  long long visited = 0;
   stack_.clear();
   stack_.push_back(tree_.root());
   while (!stack_.empty()) {
     const int node = stack_.back();
     stack_.pop_back();
-    ++stats_.nodesVisited;
-    ++stats_.boxesTested;
+    ++visited;
     if (!tree_.box(node).overlaps(box)) continue;
     if (!tree_.isLeaf(node)) {
       stack_.push_back(tree_.child2(node));
@@ -85,6 +85,7 @@ void TreeBroadPhase::queryChanged(int proxy) {
       fresh_.push_back({other.body, body, node, proxy});
     }
   }
+  return visited;
 }
 
 namespace {
@@ -129,9 +130,27 @@ void TreeBroadPhase::findPairs(std::vector<BodyPair>& pairs) {
   fresh_.clear();
   orderForLocality();
   for (const int proxy : changed_) {
-    if (tree_.isProxy(proxy)) queryChanged(proxy);
+    if (tree_.isProxy(proxy)) stats_.nodesVisited += queryChanged(proxy);
   }
+  stats_.boxesTested = stats_.nodesVisited;  // one box test per visited node
   std::sort(fresh_.begin(), fresh_.end());
+  mergeFreshPairs();
+  for (const int proxy : changed_) proxies_[proxy].touched = false;
+  changed_.clear();
+  pairs.clear();
+  pairs.reserve(pairs_.size());
+  for (const ProxyPair& pair : pairs_) {
+    // Two proxies of the same two bodies make one body pair.
+    if (pairs.empty() || pairs.back().a != pair.bodyA || pairs.back().b != pair.bodyB) {
+      pairs.push_back({pair.bodyA, pair.bodyB});
+    }
+  }
+}
+
+// Persistent pairs of two unchanged proxies stay (their boxes and eligibility
+// did not change); every pair with a changed proxy comes from this call's
+// queries. Both lists are sorted, so a merge keeps the result sorted.
+void TreeBroadPhase::mergeFreshPairs() {
   auto unchanged = [&](const ProxyPair& pair) {
     return !proxies_[pair.proxyA].touched && !proxies_[pair.proxyB].touched;
   };
@@ -149,16 +168,6 @@ void TreeBroadPhase::findPairs(std::vector<BodyPair>& pairs) {
     }
   }
   pairs_.swap(merged_);
-  for (const int proxy : changed_) proxies_[proxy].touched = false;
-  changed_.clear();
-  pairs.clear();
-  pairs.reserve(pairs_.size());
-  for (const ProxyPair& pair : pairs_) {
-    // Two proxies of the same two bodies make one body pair.
-    if (pairs.empty() || pairs.back().a != pair.bodyA || pairs.back().b != pair.bodyB) {
-      pairs.push_back({pair.bodyA, pair.bodyB});
-    }
-  }
 }
 
 }  // namespace physdbg

@@ -43,7 +43,8 @@ class TreeBroadPhase final : public BroadPhase {
 
   void touch(int proxy);
   bool drivesPairs(int proxy) const;
-  void queryChanged(int proxy);
+  long long queryChanged(int proxy);
+  void mergeFreshPairs();
   void orderForLocality();
   void requireProxy(int proxy, const char* operation) const;
 

@@ -207,6 +207,30 @@ TEST(DynamicAabbTree, BranchAndBoundFindsTheExhaustiveBestSibling) {
   EXPECT_GT(greedyWorse, 0) << "greedy never missed the optimum: the comparison proves nothing";
 }
 
+// A move starts the search from the old sibling's cost; the result must still
+// be the exhaustive optimum. A copy with the proxy destroyed shows the tree
+// the reinsertion searched.
+TEST(DynamicAabbTree, ReinsertionAfterAMoveFindsTheExhaustiveBestSibling) {
+  std::mt19937 random(12);
+  DynamicAabbTree tree(makeOptions(InsertionMethod::BranchAndBound, false, 0.0));
+  std::vector<int> proxies;
+  std::vector<Aabb> boxes;
+  for (int i = 0; i < 300; ++i) {
+    boxes.push_back(randomBox(random, 30.0, 3.0));
+    proxies.push_back(tree.createProxy(boxes.back(), 0));
+  }
+  std::normal_distribution<double> step(0.0, 1.0);
+  for (int i = 0; i < 300; ++i) {
+    const Vec3 displacement(step(random), step(random), step(random));
+    const Aabb moved{boxes[i].min + displacement, boxes[i].max + displacement};
+    DynamicAabbTree without = tree;
+    without.destroyProxy(proxies[i]);
+    const double best = bruteForceBestCost(without, moved);
+    ASSERT_TRUE(tree.moveProxy(proxies[i], moved, displacement));
+    EXPECT_NEAR(tree.internalArea() - without.internalArea(), best, 1e-9 * tree.internalArea()) << "move " << i;
+  }
+}
+
 TEST(DynamicAabbTree, TopDownRebuildKeepsProxiesAndImprovesUnrotatedTrees) {
   const std::vector<Aabb> grid = sortedGrid(32);
   std::vector<int> proxies;
