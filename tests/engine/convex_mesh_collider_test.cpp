@@ -29,6 +29,14 @@ TEST(ConvexMeshCollider, CubeWithDuplicatesAndCoplanarPointsHasSixQuads) {
     EXPECT_NEAR(face.normal.cwiseAbs().maxCoeff(), 1.0, 1e-12);
     EXPECT_NEAR(face.offset, 1.0, 1e-12);
     for (int v : face.vertices) EXPECT_NEAR(face.normal.dot(mesh.hullVertices()[v]), 1.0, 1e-12);
+    // Counter-clockwise seen from outside: every corner turns the same way.
+    const auto& verts = mesh.hullVertices();
+    for (std::size_t i = 0; i < face.vertices.size(); ++i) {
+      const Vec3& p0 = verts[face.vertices[i]];
+      const Vec3& p1 = verts[face.vertices[(i + 1) % face.vertices.size()]];
+      const Vec3& p2 = verts[face.vertices[(i + 2) % face.vertices.size()]];
+      EXPECT_GE((p1 - p0).cross(p2 - p1).dot(face.normal), 0.0);
+    }
   }
   EXPECT_NEAR(mesh.volume(), 8.0, 1e-12);
   EXPECT_LE(mesh.centroid().norm(), 1e-12);
