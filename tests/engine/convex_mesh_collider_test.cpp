@@ -85,6 +85,23 @@ TEST(ConvexMeshCollider, TrianglesCoverTheSurfaceOutward) {
   }
 }
 
+TEST(ConvexMeshCollider, LatticeFarFromTheOriginGivesACleanBox) {
+  // Every point coplanar or collinear with many others, offset by 1e5.
+  std::vector<Vec3> lattice;
+  const Vec3 offset(1e5, -1e5, 3e4);
+  for (int i = 0; i < 5; ++i) {
+    for (int j = 0; j < 5; ++j) {
+      for (int k = 0; k < 5; ++k) lattice.push_back(offset + Vec3(i, 0.5 * j, 0.25 * k));
+    }
+  }
+  ConvexMeshCollider mesh(lattice);
+  EXPECT_EQ(mesh.hullFaces().size(), 6u);
+  EXPECT_NEAR(mesh.volume(), 4.0 * 2.0 * 1.0, 1e-9);
+  EXPECT_LE((mesh.centroid() - (offset + Vec3(2.0, 1.0, 0.5))).norm(), 1e-9);
+  BoxCollider box(Vec3(2.0, 1.0, 0.5));
+  EXPECT_LE((mesh.unitInertia() - box.unitInertia()).norm(), 1e-9);
+}
+
 TEST(ConvexMeshCollider, BadCloudsThrow) {
   EXPECT_THROW(ConvexMeshCollider({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}), std::invalid_argument);
   EXPECT_THROW(ConvexMeshCollider({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 1, 0), Vec3(1, 0, 0)}),
