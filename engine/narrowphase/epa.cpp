@@ -188,9 +188,9 @@ EpaResult runEpa(const Simplex& start, SupportShape& a, SupportShape& b, const N
   EpaResult result;
   if (count < 4) {  // A - B is flat: the shapes can only touch
     if (count >= 3) result.normal = (points[1].w - points[0].w).cross(points[2].w - points[0].w).normalized();
-    const Simplex& s = start;
-    result.pointA = s.size > 0 ? s.vertices[0].a : a.centre();
-    result.pointB = s.size > 0 ? s.vertices[0].b : b.centre();
+    // GJK stopped on the origin, so its weights give the touching points.
+    result.pointA = start.size > 0 ? start.pointA() : a.centre();
+    result.pointB = start.size > 0 ? start.pointB() : b.centre();
     return result;
   }
   Polytope polytope;
