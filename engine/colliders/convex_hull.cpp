@@ -175,6 +175,7 @@ void buildAdjacency(ConvexHull& hull) {
     hull.neighbours.insert(hull.neighbours.end(), list.begin(), list.end());
     hull.neighbourStart.push_back(static_cast<int>(hull.neighbours.size()));
   }
+  for (int n : hull.neighbours) hull.neighbourPoints.push_back(hull.vertices[n]);
 }
 
 }  // namespace

@@ -24,6 +24,7 @@ struct ConvexHull {
   // neighbours[neighbourStart[v] .. neighbourStart[v + 1]).
   std::vector<int> neighbourStart;
   std::vector<int> neighbours;
+  std::vector<Vec3> neighbourPoints;  // vertices[neighbours[k]], contiguous for support climbing
 };
 
 // Throws std::invalid_argument for non-finite values, fewer than 4 distinct

@@ -85,9 +85,8 @@ int ConvexMeshCollider::climb(const Vec3& direction, int start) const {
   for (int previous = -1; previous != current;) {
     previous = current;
     for (int k = hull_.neighbourStart[previous]; k < hull_.neighbourStart[previous + 1]; ++k) {
-      const int next = hull_.neighbours[k];
-      const double value = v[next].dot(direction);
-      if (value > best) best = value, current = next;
+      const double value = hull_.neighbourPoints[k].dot(direction);
+      if (value > best) best = value, current = hull_.neighbours[k];
     }
   }
   return current;

@@ -34,7 +34,9 @@ struct NarrowPhaseOptions {
   // relative to the size of the pair (shapes' bounding radii).
   double relativeTolerance = 1e-12;
   int maxGjkIterations = 64;
-  int maxEpaFaces = 256;  // at most 256 triangles in the polytope
+  // Triangles the EPA polytope may hold (capped at kEpaFaceCapacity = 512);
+  // when spent, the closest face so far is reported (a lower bound on depth).
+  int maxEpaFaces = 256;
   bool analyticFastPaths = true;
 };
 

@@ -21,7 +21,6 @@ struct Face {
   std::array<int, 3> v;
   Vec3 normal;
   double distance;  // signed distance of the origin's projection; +inf when degenerate
-  bool alive;
 };
 
 struct Polytope {
@@ -35,17 +34,17 @@ struct Polytope {
     const Vec3 n = (vertices[j].w - p).cross(vertices[k].w - p);
     const double length = n.norm();
     if (length == 0.0) {
-      faces[faceCount++] = {{i, j, k}, Vec3::Zero(), std::numeric_limits<double>::infinity(), true};
+      faces[faceCount++] = {{i, j, k}, Vec3::Zero(), std::numeric_limits<double>::infinity()};
       return;
     }
     const Vec3 unit = n / length;
-    faces[faceCount++] = {{i, j, k}, unit, unit.dot(p), true};
+    faces[faceCount++] = {{i, j, k}, unit, unit.dot(p)};
   }
 
   int closestFace() const {
     int best = -1;
     for (int f = 0; f < faceCount; ++f) {
-      if (faces[f].alive && (best < 0 || faces[f].distance < faces[best].distance)) best = f;
+      if (best < 0 || faces[f].distance < faces[best].distance) best = f;
     }
     return best;
   }
@@ -129,14 +128,17 @@ void initialisePolytope(Polytope& polytope, const std::array<SimplexVertex, 4>& 
 bool expand(Polytope& polytope, const SimplexVertex& vertex, int faceBudget, double eps) {
   std::array<Edge, kEpaFaceCapacity> removed;  // left uninitialised: filled before use
   int removedCount = 0;
-  const int newIndex = polytope.vertexCount;
+  int live = 0;  // faces that stay are compacted in the same pass
   for (int f = 0; f < polytope.faceCount; ++f) {
-    Face& face = polytope.faces[f];
-    if (!face.alive || face.normal.dot(vertex.w - polytope.vertices[face.v[0]].w) <= eps) continue;
+    const Face& face = polytope.faces[f];
+    if (face.normal.dot(vertex.w - polytope.vertices[face.v[0]].w) <= eps) {
+      polytope.faces[live++] = face;
+      continue;
+    }
     if (removedCount + 3 > kEpaFaceCapacity) return false;
-    face.alive = false;
     for (int e = 0; e < 3; ++e) removed[removedCount++] = {face.v[e], face.v[(e + 1) % 3]};
   }
+  polytope.faceCount = live;
   std::array<Edge, kEpaFaceCapacity> horizon;
   int horizonCount = 0;
   for (int e = 0; e < removedCount; ++e) {
@@ -145,11 +147,7 @@ bool expand(Polytope& polytope, const SimplexVertex& vertex, int faceBudget, dou
       horizon[horizonCount++] = removed[e];
     }
   }
-  int live = 0;
-  for (int f = 0; f < polytope.faceCount; ++f) {
-    if (polytope.faces[f].alive) polytope.faces[live++] = polytope.faces[f];
-  }
-  polytope.faceCount = live;
+  const int newIndex = polytope.vertexCount;
   if (live + horizonCount > std::min(faceBudget, kEpaFaceCapacity) || newIndex >= kVertexCapacity) return false;
   polytope.vertices[polytope.vertexCount++] = vertex;
   for (int e = 0; e < horizonCount; ++e) polytope.addFace(horizon[e].from, horizon[e].to, newIndex);
@@ -190,9 +188,9 @@ EpaResult runEpa(const Simplex& start, SupportShape& a, SupportShape& b, const N
   EpaResult result;
   if (count < 4) {  // A - B is flat: the shapes can only touch
     if (count >= 3) result.normal = (points[1].w - points[0].w).cross(points[2].w - points[0].w).normalized();
-    const Simplex& s = start;
-    result.pointA = s.size > 0 ? s.vertices[0].a : a.centre();
-    result.pointB = s.size > 0 ? s.vertices[0].b : b.centre();
+    // GJK stopped on the origin, so its weights give the touching points.
+    result.pointA = start.size > 0 ? start.pointA() : a.centre();
+    result.pointB = start.size > 0 ? start.pointB() : b.centre();
     return result;
   }
   Polytope polytope;

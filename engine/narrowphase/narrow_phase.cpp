@@ -47,9 +47,8 @@ bool tryFastPath(const Collider& a, const Transform& ta, const Collider& b, cons
 // along the core normal afterwards.
 ContactResult generalPath(const Collider& a, const Transform& ta, const Collider& b, const Transform& tb,
                           const NarrowPhaseOptions& options) {
-  const Transform normalisedA{ta.position, ta.rotation.normalized()};
-  const Mat3 rotationA = normalisedA.rotation.toRotationMatrix();
-  const Mat3 rotationB = rotationA.transpose() * tb.rotation.normalized().toRotationMatrix();
+  const Mat3 rotationA = ta.rotation.toRotationMatrix();
+  const Mat3 rotationB = rotationA.transpose() * tb.rotation.toRotationMatrix();
   SupportShape shapeA(a, Mat3::Identity(), Vec3::Zero());
   SupportShape shapeB(b, rotationB, rotationA.transpose() * (tb.position - ta.position));
   const GjkResult gjk = runGjk(shapeA, shapeB, options);
@@ -72,7 +71,7 @@ ContactResult generalPath(const Collider& a, const Transform& ta, const Collider
   pointA += shapeA.margin() * normal;
   pointB -= shapeB.margin() * normal;
   ContactResult result = classifyContact(coreDistance - shapeA.margin() - shapeB.margin(), rotationA * normal,
-                                         normalisedA.apply(pointA), normalisedA.apply(pointB),
+                                         ta.position + rotationA * pointA, ta.position + rotationA * pointB,
                                          options.touchingTolerance);
   result.gjkIterations = gjk.iterations;
   result.epaIterations = epaIterations;
@@ -85,9 +84,11 @@ ContactResult generalPath(const Collider& a, const Transform& ta, const Collider
 ContactResult collide(const Collider& a, const Transform& ta, const Collider& b, const Transform& tb,
                       const NarrowPhaseOptions& options) {
   validate(ta, tb, options);
+  // Rotations are normalised once here so callers may pass slightly drifted quaternions.
+  const Transform unitA{ta.position, ta.rotation.normalized()}, unitB{tb.position, tb.rotation.normalized()};
   ContactResult result;
-  if (options.analyticFastPaths && tryFastPath(a, ta, b, tb, options.touchingTolerance, result)) return result;
-  return generalPath(a, ta, b, tb, options);
+  if (options.analyticFastPaths && tryFastPath(a, unitA, b, unitB, options.touchingTolerance, result)) return result;
+  return generalPath(a, unitA, b, unitB, options);
 }
 
 }  // namespace physdbg

@@ -1,5 +1,6 @@
 #include "engine/narrowphase/support_shape.h"
 
+#include "engine/colliders/box_collider.h"
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/convex_mesh_collider.h"
 #include "engine/colliders/sphere_collider.h"
@@ -12,23 +13,31 @@ SupportShape::SupportShape(const Collider& collider, const Mat3& rotation, const
   centre_ = position + rotation * bounds.center();
   size_ = bounds.halfExtents().norm();
   if (collider.kind() == ColliderKind::Sphere) margin_ = static_cast<const SphereCollider&>(collider).radius();
+  if (collider.kind() == ColliderKind::Box) halfExtents_ = static_cast<const BoxCollider&>(collider).halfExtents();
+  rotated_ = !(rotation == Mat3::Identity() && position == Vec3::Zero());
   if (collider.kind() == ColliderKind::Capsule) margin_ = static_cast<const CapsuleCollider&>(collider).radius();
 }
 
 Vec3 SupportShape::support(const Vec3& direction) {
-  const Vec3 local = rotation_.transpose() * direction;
+  const Vec3 local = rotated_ ? Vec3(rotation_.transpose() * direction) : direction;
+  Vec3 point;
   switch (collider_.kind()) {
     case ColliderKind::Sphere: return position_;
-    case ColliderKind::Capsule:
-      return position_ + rotation_ * static_cast<const CapsuleCollider&>(collider_).localCoreSupport(local);
+    case ColliderKind::Box:  // same corner choice as BoxCollider::localSupport
+      point = Vec3(local.x() < 0.0 ? -halfExtents_.x() : halfExtents_.x(),
+                   local.y() < 0.0 ? -halfExtents_.y() : halfExtents_.y(),
+                   local.z() < 0.0 ? -halfExtents_.z() : halfExtents_.z());
+      break;
+    case ColliderKind::Capsule: point = static_cast<const CapsuleCollider&>(collider_).localCoreSupport(local); break;
     case ColliderKind::ConvexMesh: {
       const auto& mesh = static_cast<const ConvexMeshCollider&>(collider_);
       hint_ = mesh.supportIndex(local, hint_);
-      return position_ + rotation_ * mesh.hullVertices()[hint_];
+      point = mesh.hullVertices()[hint_];
+      break;
     }
-    case ColliderKind::Box: break;
+    default: point = collider_.localSupport(local);
   }
-  return position_ + rotation_ * collider_.localSupport(local);
+  return rotated_ ? Vec3(position_ + rotation_ * point) : point;
 }
 
 }  // namespace physdbg

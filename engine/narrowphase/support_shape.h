@@ -28,7 +28,9 @@ class SupportShape {
   Vec3 centre_;
   double margin_ = 0.0;
   double size_ = 0.0;
-  int hint_ = -1;  // warm start for convex meshes, valid for one query
+  Vec3 halfExtents_ = Vec3::Zero();  // boxes: support inlined, no virtual call
+  bool rotated_ = true;              // false for body A, whose frame this is
+  int hint_ = -1;                    // warm start for convex meshes, valid for one query
 };
 
 }  // namespace physdbg

@@ -67,6 +67,8 @@ TEST(CapsuleContact, CrossedCapsulesAreExact) {
     EXPECT_EQ(r.status, ContactStatus::Penetrating);
     EXPECT_NEAR(r.depth, 0.4, 1e-9);
     EXPECT_NEAR(std::abs(r.normal.dot(motion.rotation * Vec3::UnitZ())), 1.0, 1e-9);
+    EXPECT_LE((0.5 * (r.pointA + r.pointB) - motion.apply(Vec3(0, 0.2, 0))).norm(), 1e-9);  // the crossing
+    EXPECT_NEAR((r.pointA - r.pointB).norm(), 0.4, 1e-9);
   }
 }
 

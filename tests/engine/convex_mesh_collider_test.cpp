@@ -29,6 +29,14 @@ TEST(ConvexMeshCollider, CubeWithDuplicatesAndCoplanarPointsHasSixQuads) {
     EXPECT_NEAR(face.normal.cwiseAbs().maxCoeff(), 1.0, 1e-12);
     EXPECT_NEAR(face.offset, 1.0, 1e-12);
     for (int v : face.vertices) EXPECT_NEAR(face.normal.dot(mesh.hullVertices()[v]), 1.0, 1e-12);
+    // Counter-clockwise seen from outside: every corner turns the same way.
+    const auto& verts = mesh.hullVertices();
+    for (std::size_t i = 0; i < face.vertices.size(); ++i) {
+      const Vec3& p0 = verts[face.vertices[i]];
+      const Vec3& p1 = verts[face.vertices[(i + 1) % face.vertices.size()]];
+      const Vec3& p2 = verts[face.vertices[(i + 2) % face.vertices.size()]];
+      EXPECT_GE((p1 - p0).cross(p2 - p1).dot(face.normal), 0.0);
+    }
   }
   EXPECT_NEAR(mesh.volume(), 8.0, 1e-12);
   EXPECT_LE(mesh.centroid().norm(), 1e-12);
@@ -75,6 +83,23 @@ TEST(ConvexMeshCollider, TrianglesCoverTheSurfaceOutward) {
     const Vec3 normal = (v[t[1]] - v[t[0]]).cross(v[t[2]] - v[t[0]]);
     for (const Vec3& p : cloud) EXPECT_LE(normal.normalized().dot(p - v[t[0]]), 1e-9);
   }
+}
+
+TEST(ConvexMeshCollider, LatticeFarFromTheOriginGivesACleanBox) {
+  // Every point coplanar or collinear with many others, offset by 1e5.
+  std::vector<Vec3> lattice;
+  const Vec3 offset(1e5, -1e5, 3e4);
+  for (int i = 0; i < 5; ++i) {
+    for (int j = 0; j < 5; ++j) {
+      for (int k = 0; k < 5; ++k) lattice.push_back(offset + Vec3(i, 0.5 * j, 0.25 * k));
+    }
+  }
+  ConvexMeshCollider mesh(lattice);
+  EXPECT_EQ(mesh.hullFaces().size(), 6u);
+  EXPECT_NEAR(mesh.volume(), 4.0 * 2.0 * 1.0, 1e-9);
+  EXPECT_LE((mesh.centroid() - (offset + Vec3(2.0, 1.0, 0.5))).norm(), 1e-9);
+  BoxCollider box(Vec3(2.0, 1.0, 0.5));
+  EXPECT_LE((mesh.unitInertia() - box.unitInertia()).norm(), 1e-9);
 }
 
 TEST(ConvexMeshCollider, BadCloudsThrow) {

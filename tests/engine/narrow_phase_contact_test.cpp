@@ -245,3 +245,42 @@ TEST(NarrowPhaseContact, CountersTallyPaths) {
 
 }  // namespace
 }  // namespace physdbg
+
+namespace physdbg {
+namespace {
+
+TEST(NarrowPhaseContact, BoxOnAThinPlateUnderMotions) {
+  BoxCollider plate(Vec3(2, 2, 0.005));
+  BoxCollider box(Vec3(0.5, 0.3, 0.2));
+  const Transform onPlate{Vec3(0.4, -0.2, 0.005 + 0.2 - 0.003), Quat(Eigen::AngleAxisd(0.3, Vec3::UnitZ()))};
+  const ContactResult r = collide(plate, Transform{}, box, onPlate);
+  EXPECT_EQ(r.status, ContactStatus::Penetrating);
+  EXPECT_NEAR(r.depth, 0.003, 1e-12);
+  EXPECT_LE((r.normal - Vec3::UnitZ()).norm(), 1e-12);
+  for (const Transform& motion : testing::testMotions(13)) {
+    const ContactResult moved = collide(plate, motion, box, testing::compose(motion, onPlate));
+    testing::expectSameUnderMotion(r, moved, motion, 1e-9, false);
+  }
+}
+
+TEST(NarrowPhaseContact, SpentBudgetsStillGiveFiniteBoundedAnswers) {
+  BoxCollider a(Vec3(1, 0.7, 0.4)), b(Vec3(0.6, 0.5, 0.9));
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> unit(-0.8, 0.8);
+  for (int i = 0; i < 200; ++i) {
+    const Transform ta{Vec3::Zero(), testing::randomRotation(rng)};
+    const Transform tb{Vec3(unit(rng), unit(rng), unit(rng)), testing::randomRotation(rng)};
+    const ContactResult exact = collide(a, ta, b, tb);
+    NarrowPhaseOptions tight;
+    tight.maxEpaFaces = 6;
+    tight.maxGjkIterations = 3;
+    const ContactResult bounded = collide(a, ta, b, tb, tight);
+    testing::expectFinite(bounded);
+    if (bounded.status == ContactStatus::Penetrating) {
+      EXPECT_LE(bounded.depth, exact.depth + 1e-9);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace physdbg
