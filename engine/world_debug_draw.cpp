@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "engine/broadphase/dynamic_aabb_tree.h"
+#include "engine/broadphase/tree_debug_draw.h"
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/convex_mesh_collider.h"
@@ -78,16 +79,6 @@ dd::Color shade(dd::Color color, float factor) {
   return {color.r * factor, color.g * factor, color.b * factor, color.a};
 }
 
-// Internal tree nodes in blue, lighter with depth so levels can be told apart.
-void emitTree(const DynamicAabbTree& tree, dd::Frame& frame) {
-  tree.forEachNode([&](const Aabb& box, int depth, bool isLeaf) {
-    if (isLeaf) return;
-    const float lift = std::min(0.6f, 0.08f * static_cast<float>(depth));
-    const dd::Color color{dd::colors::treeNode.r + lift, dd::colors::treeNode.g + lift, 1.0f, 1.0f};
-    frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), color});
-  });
-}
-
 void emitContacts(const std::vector<Contact>& contacts, double scale, dd::Frame& frame) {
   for (const Contact& contact : contacts) {
     const ContactResult& result = contact.result;
@@ -129,7 +120,9 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame) const {
       frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), {0.5f, 0.3f, 0.7f, 1}});
   }
   if (layers.has(dd::Layer::Tree)) {
-    if (const DynamicAabbTree* broadPhaseTree = tree()) emitTree(*broadPhaseTree, frame);
+    TreeDrawOptions options;
+    options.leaves = false;  // the fat boxes are the `fat` layer
+    if (const DynamicAabbTree* broadPhaseTree = tree()) drawTree(*broadPhaseTree, options, frame);
   }
   if (layers.has(dd::Layer::Contacts)) emitContacts(contacts_, std::max(typicalSize, 0.2), frame);
   if (layers.has(dd::Layer::Pairs)) {

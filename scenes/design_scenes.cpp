@@ -63,8 +63,9 @@ SceneDescription ballsScene(const std::string& name, const std::string& descript
   addEnclosure(scene);
   for (int i = 0; i < count; ++i) scene.bodies.push_back(ball(i));
   SceneCamera camera;
-  camera.eye = Vec3(0, 11, 15);
-  camera.target = Vec3(0, 2, 0);
+  // Steep enough to see the floor over the 8 m near wall.
+  camera.eye = Vec3(0, 24, 8);
+  camera.target = Vec3(0, 1, 0);
   scene.camera = camera;
   return scene;
 }
