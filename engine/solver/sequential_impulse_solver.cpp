@@ -26,16 +26,6 @@ double effectiveMass(double inverseMassSum, const Mat3& inverseInertiaA, const M
   return k > 0.0 ? 1.0 / k : 0.0;
 }
 
-Vec3 pointVelocity(const RigidBody& body, const Vec3& arm) {
-  return body.linearVelocity() + body.angularVelocity().cross(arm);
-}
-
-// Current gap at a manifold point, from its anchors on both bodies.
-double currentSeparation(const RigidBody& a, const RigidBody& b, const ContactManifold& manifold,
-                         const ManifoldPoint& point) {
-  return (b.transform().apply(point.localB) - a.transform().apply(point.localA)).dot(manifold.normal);
-}
-
 }  // namespace
 
 double SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
@@ -58,30 +48,54 @@ double SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, const std::
   for (int substep = 0; substep < substeps; ++substep) {
     for (std::size_t i = 0; i < bodies.size(); ++i)
       if (movable[i]) bodies[i].integrateVelocity(h);
-    if (settings.warmStarting) warmStart(bodies, manifolds);
+    loadVelocities(bodies);
+    if (settings.warmStarting) warmStart(manifolds);
     for (int iteration = 0; iteration < settings.velocityIterations; ++iteration)
-      solve(bodies, manifolds, h, softness, true, settings);
+      solve(manifolds, h, softness, true, settings);
+    storeVelocities(bodies);
     for (std::size_t i = 0; i < bodies.size(); ++i)
       if (movable[i]) bodies[i].integratePosition(h);
-    solve(bodies, manifolds, h, rigid, false, settings);
+    loadPoses(bodies);
+    loadVelocities(bodies);
+    solve(manifolds, h, rigid, false, settings);
+    storeVelocities(bodies);
   }
-  applyRestitution(bodies, manifolds);
-  return largestPenetration(bodies, manifolds);
+  loadVelocities(bodies);
+  applyRestitution(manifolds);
+  storeVelocities(bodies);
+  return largestPenetration(manifolds);
 }
 
 void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                       std::vector<ContactManifold>& manifolds, const SolverSettings& settings) {
-  inverseMass_.resize(bodies.size());
-  inverseInertia_.resize(bodies.size());
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    inverseMass_[i] = movable[i] ? bodies[i].inverseMass() : 0.0;
-    inverseInertia_[i] = movable[i] ? bodies[i].worldInverseInertia() : Mat3::Zero();
+  solverBodies_.resize(bodies.size());
+  active_.clear();
+  std::vector<bool> listed(bodies.size(), false);
+  for (const ContactManifold& manifold : manifolds) {
+    for (std::uint32_t id : {manifold.a, manifold.b}) {
+      if (listed[id]) continue;
+      listed[id] = true;
+      SolverBody& body = solverBodies_[id];
+      const RigidBody& source = bodies[id];
+      body.inverseMass = movable[id] ? source.inverseMass() : 0.0;
+      body.inverseInertia = movable[id] ? source.worldInverseInertia() : Mat3::Zero();
+      for (int axis = 0; axis < 3; ++axis) {
+        body.linearMask[axis] = source.lockTranslation()[axis] ? 0.0 : 1.0;
+        body.angularMask[axis] = source.lockRotation()[axis] ? 0.0 : 1.0;
+      }
+      body.linearVelocity = source.linearVelocity();
+      body.angularVelocity = source.angularVelocity();
+      body.position = source.position();
+      body.rotation = source.orientation().toRotationMatrix();
+      if (movable[id]) active_.push_back(id);
+    }
   }
   constraints_.resize(manifolds.size() * ContactManifold::maxPoints);
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
     ContactManifold& manifold = manifolds[m];
     const RigidBody &a = bodies[manifold.a], &b = bodies[manifold.b];
-    const double inverseMassSum = inverseMass_[manifold.a] + inverseMass_[manifold.b];
+    const SolverBody &bodyA = solverBodies_[manifold.a], &bodyB = solverBodies_[manifold.b];
+    const double inverseMassSum = bodyA.inverseMass + bodyB.inverseMass;
     const double restitution = std::max(a.material().restitution, b.material().restitution);
     for (int p = 0; p < manifold.pointCount; ++p) {
       ManifoldPoint& point = manifold.points[p];
@@ -90,11 +104,12 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
       c.armA = contact - a.position();
       c.armB = contact - b.position();
       tangentBasis(manifold.normal, c.tangent[0], c.tangent[1]);
-      const Mat3 &inertiaA = inverseInertia_[manifold.a], &inertiaB = inverseInertia_[manifold.b];
-      c.normalMass = effectiveMass(inverseMassSum, inertiaA, inertiaB, c.armA, c.armB, manifold.normal);
+      c.normalMass =
+          effectiveMass(inverseMassSum, bodyA.inverseInertia, bodyB.inverseInertia, c.armA, c.armB, manifold.normal);
       for (int t = 0; t < 2; ++t)
-        c.tangentMass[t] = effectiveMass(inverseMassSum, inertiaA, inertiaB, c.armA, c.armB, c.tangent[t]);
-      const Vec3 relative = pointVelocity(b, c.armB) - pointVelocity(a, c.armA);
+        c.tangentMass[t] = effectiveMass(inverseMassSum, bodyA.inverseInertia, bodyB.inverseInertia, c.armA, c.armB,
+                                         c.tangent[t]);
+      const Vec3 relative = relativeVelocity(manifold, c);
       c.approachVelocity = relative.dot(manifold.normal);
       const double slidingSpeed = (relative - c.approachVelocity * manifold.normal).norm();
       c.friction = slidingSpeed < settings.stickingSpeed
@@ -107,29 +122,54 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
   }
 }
 
-void SequentialImpulseSolver::applyImpulse(std::vector<RigidBody>& bodies, const ContactManifold& manifold,
-                                           const PointConstraint& c, const Vec3& impulse) {
-  if (inverseMass_[manifold.a] > 0.0) {
-    RigidBody& a = bodies[manifold.a];
-    a.setLinearVelocity(a.linearVelocity() - inverseMass_[manifold.a] * impulse);
-    a.setAngularVelocity(a.angularVelocity() - inverseInertia_[manifold.a] * c.armA.cross(impulse));
-    a.applyLocks();
-  }
-  if (inverseMass_[manifold.b] > 0.0) {
-    RigidBody& b = bodies[manifold.b];
-    b.setLinearVelocity(b.linearVelocity() + inverseMass_[manifold.b] * impulse);
-    b.setAngularVelocity(b.angularVelocity() + inverseInertia_[manifold.b] * c.armB.cross(impulse));
-    b.applyLocks();
+void SequentialImpulseSolver::loadVelocities(const std::vector<RigidBody>& bodies) {
+  for (std::uint32_t id : active_) {
+    solverBodies_[id].linearVelocity = bodies[id].linearVelocity();
+    solverBodies_[id].angularVelocity = bodies[id].angularVelocity();
   }
 }
 
-void SequentialImpulseSolver::warmStart(std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds) {
+void SequentialImpulseSolver::storeVelocities(std::vector<RigidBody>& bodies) const {
+  for (std::uint32_t id : active_) {
+    bodies[id].setLinearVelocity(solverBodies_[id].linearVelocity);
+    bodies[id].setAngularVelocity(solverBodies_[id].angularVelocity);
+  }
+}
+
+void SequentialImpulseSolver::loadPoses(const std::vector<RigidBody>& bodies) {
+  for (std::uint32_t id : active_) {
+    solverBodies_[id].position = bodies[id].position();
+    solverBodies_[id].rotation = bodies[id].orientation().toRotationMatrix();
+  }
+}
+
+// Current gap at a manifold point, from its anchors on both bodies.
+double SequentialImpulseSolver::separation(const ContactManifold& manifold, const ManifoldPoint& point) const {
+  const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
+  return ((b.position + b.rotation * point.localB) - (a.position + a.rotation * point.localA)).dot(manifold.normal);
+}
+
+Vec3 SequentialImpulseSolver::relativeVelocity(const ContactManifold& manifold, const PointConstraint& c) const {
+  const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
+  return (b.linearVelocity + b.angularVelocity.cross(c.armB)) - (a.linearVelocity + a.angularVelocity.cross(c.armA));
+}
+
+void SequentialImpulseSolver::applyImpulse(const ContactManifold& manifold, const PointConstraint& c,
+                                           const Vec3& impulse) {
+  SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
+  a.linearVelocity -= (a.inverseMass * impulse).cwiseProduct(a.linearMask);
+  a.angularVelocity -= (a.inverseInertia * c.armA.cross(impulse)).cwiseProduct(a.angularMask);
+  b.linearVelocity += (b.inverseMass * impulse).cwiseProduct(b.linearMask);
+  b.angularVelocity += (b.inverseInertia * c.armB.cross(impulse)).cwiseProduct(b.angularMask);
+}
+
+void SequentialImpulseSolver::warmStart(const std::vector<ContactManifold>& manifolds) {
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
     const ContactManifold& manifold = manifolds[m];
     for (int p = 0; p < manifold.pointCount; ++p) {
       const ManifoldPoint& point = manifold.points[p];
       const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-      applyImpulse(bodies, manifold, c,
+      applyImpulse(manifold, c,
                    point.normalImpulse * manifold.normal + point.tangentImpulse[0] * c.tangent[0] +
                        point.tangentImpulse[1] * c.tangent[1]);
     }
@@ -139,46 +179,44 @@ void SequentialImpulseSolver::warmStart(std::vector<RigidBody>& bodies, const st
 // One sweep over every point: the normal constraint (soft push-out while
 // overlapping with `useBias`, exact closing of the gap while apart), then
 // Coulomb friction clamped to the cone |f| <= mu * normal impulse.
-void SequentialImpulseSolver::solve(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
-                                    double substep, const Softness& softness, bool useBias,
-                                    const SolverSettings& settings) {
+void SequentialImpulseSolver::solve(std::vector<ContactManifold>& manifolds, double substep, const Softness& softness,
+                                    bool useBias, const SolverSettings& settings) {
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
     ContactManifold& manifold = manifolds[m];
-    const RigidBody &a = bodies[manifold.a], &b = bodies[manifold.b];
     for (int p = 0; p < manifold.pointCount; ++p) {
       ManifoldPoint& point = manifold.points[p];
       PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-      const double separation = currentSeparation(a, b, manifold, point);
+      const double gap = separation(manifold, point);
       double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
-      if (separation > 0.0) {
-        bias = separation / substep;
+      if (gap > 0.0) {
+        bias = gap / substep;
       } else if (useBias) {
-        bias = std::max(softness.biasRate * separation, -settings.maxPushSpeed);
+        bias = std::max(softness.biasRate * gap, -settings.maxPushSpeed);
         massScale = softness.massScale;
         impulseScale = softness.impulseScale;
       }
-      const double normalVelocity = (pointVelocity(b, c.armB) - pointVelocity(a, c.armA)).dot(manifold.normal);
-      const double impulse =
-          -c.normalMass * massScale * (normalVelocity + bias) - impulseScale * point.normalImpulse;
+      const double normalVelocity = relativeVelocity(manifold, c).dot(manifold.normal);
+      const double impulse = -c.normalMass * massScale * (normalVelocity + bias) - impulseScale * point.normalImpulse;
       const double total = std::max(point.normalImpulse + impulse, 0.0);
-      applyImpulse(bodies, manifold, c, (total - point.normalImpulse) * manifold.normal);
+      applyImpulse(manifold, c, (total - point.normalImpulse) * manifold.normal);
       point.normalImpulse = total;
       c.largestImpulse = std::max(c.largestImpulse, total);
     }
     for (int p = 0; p < manifold.pointCount; ++p) {
       ManifoldPoint& point = manifold.points[p];
       const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-      const Vec3 relative = pointVelocity(b, c.armB) - pointVelocity(a, c.armA);
+      const Vec3 relative = relativeVelocity(manifold, c);
       double tangentImpulse[2];
       for (int t = 0; t < 2; ++t)
         tangentImpulse[t] = point.tangentImpulse[t] - c.tangentMass[t] * relative.dot(c.tangent[t]);
       const double limit = c.friction * point.normalImpulse;
-      const double magnitude = std::hypot(tangentImpulse[0], tangentImpulse[1]);
-      if (magnitude > limit && magnitude > 0.0) {
-        tangentImpulse[0] *= limit / magnitude;
-        tangentImpulse[1] *= limit / magnitude;
+      const double squared = tangentImpulse[0] * tangentImpulse[0] + tangentImpulse[1] * tangentImpulse[1];
+      if (squared > limit * limit && squared > 0.0) {
+        const double scale = limit / std::sqrt(squared);
+        tangentImpulse[0] *= scale;
+        tangentImpulse[1] *= scale;
       }
-      applyImpulse(bodies, manifold, c,
+      applyImpulse(manifold, c,
                    (tangentImpulse[0] - point.tangentImpulse[0]) * c.tangent[0] +
                        (tangentImpulse[1] - point.tangentImpulse[1]) * c.tangent[1]);
       point.tangentImpulse[0] = tangentImpulse[0];
@@ -190,31 +228,27 @@ void SequentialImpulseSolver::solve(std::vector<RigidBody>& bodies, std::vector<
 // Restitution once, after the substeps, only where the contact pushed: the
 // approach velocity measured before the solve is reversed and scaled by e.
 // A speculative point bounces on the step it would have hit.
-void SequentialImpulseSolver::applyRestitution(std::vector<RigidBody>& bodies,
-                                               std::vector<ContactManifold>& manifolds) {
+void SequentialImpulseSolver::applyRestitution(std::vector<ContactManifold>& manifolds) {
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
     ContactManifold& manifold = manifolds[m];
     for (int p = 0; p < manifold.pointCount; ++p) {
       ManifoldPoint& point = manifold.points[p];
       const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
       if (c.restitution == 0.0 || c.largestImpulse == 0.0) continue;
-      const double normalVelocity =
-          (pointVelocity(bodies[manifold.b], c.armB) - pointVelocity(bodies[manifold.a], c.armA)).dot(manifold.normal);
+      const double normalVelocity = relativeVelocity(manifold, c).dot(manifold.normal);
       const double target = -c.restitution * c.approachVelocity;
       const double total = std::max(point.normalImpulse - c.normalMass * (normalVelocity - target), 0.0);
-      applyImpulse(bodies, manifold, c, (total - point.normalImpulse) * manifold.normal);
+      applyImpulse(manifold, c, (total - point.normalImpulse) * manifold.normal);
       point.normalImpulse = total;
     }
   }
 }
 
-double SequentialImpulseSolver::largestPenetration(const std::vector<RigidBody>& bodies,
-                                                   const std::vector<ContactManifold>& manifolds) const {
+double SequentialImpulseSolver::largestPenetration(const std::vector<ContactManifold>& manifolds) const {
   double deepest = 0.0;
   for (const ContactManifold& manifold : manifolds) {
     for (int p = 0; p < manifold.pointCount; ++p)
-      deepest = std::max(deepest, -currentSeparation(bodies[manifold.a], bodies[manifold.b], manifold,
-                                                     manifold.points[p]));
+      deepest = std::max(deepest, -separation(manifold, manifold.points[p]));
   }
   return deepest;
 }

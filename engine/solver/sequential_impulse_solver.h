@@ -37,19 +37,34 @@ class SequentialImpulseSolver {
   struct Softness {
     double biasRate = 0, massScale = 1, impulseScale = 0;
   };
+  // The solver's working copy of a body: velocities and the pose used to
+  // measure gaps, next to the inverse mass and the lock masks, so the inner
+  // loop touches one small struct per body.
+  struct SolverBody {
+    Vec3 linearVelocity = Vec3::Zero(), angularVelocity = Vec3::Zero();
+    Vec3 position = Vec3::Zero();
+    Mat3 rotation = Mat3::Identity();
+    Mat3 inverseInertia = Mat3::Zero();
+    Vec3 linearMask = Vec3::Ones(), angularMask = Vec3::Ones();  // 0 on locked axes
+    double inverseMass = 0;
+  };
 
   void prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                std::vector<ContactManifold>& manifolds, const SolverSettings& settings);
-  void warmStart(std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds);
-  void solve(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds, double substep,
-             const Softness& softness, bool useBias, const SolverSettings& settings);
-  void applyRestitution(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds);
-  double largestPenetration(const std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds) const;
-  void applyImpulse(std::vector<RigidBody>& bodies, const ContactManifold& manifold, const PointConstraint& constraint,
-                    const Vec3& impulse);
+  void loadVelocities(const std::vector<RigidBody>& bodies);
+  void storeVelocities(std::vector<RigidBody>& bodies) const;
+  void loadPoses(const std::vector<RigidBody>& bodies);
+  void warmStart(const std::vector<ContactManifold>& manifolds);
+  void solve(std::vector<ContactManifold>& manifolds, double substep, const Softness& softness, bool useBias,
+             const SolverSettings& settings);
+  void applyRestitution(std::vector<ContactManifold>& manifolds);
+  double largestPenetration(const std::vector<ContactManifold>& manifolds) const;
+  double separation(const ContactManifold& manifold, const ManifoldPoint& point) const;
+  Vec3 relativeVelocity(const ContactManifold& manifold, const PointConstraint& constraint) const;
+  void applyImpulse(const ContactManifold& manifold, const PointConstraint& constraint, const Vec3& impulse);
 
-  std::vector<double> inverseMass_;
-  std::vector<Mat3> inverseInertia_;
+  std::vector<SolverBody> solverBodies_;
+  std::vector<std::uint32_t> active_;  // movable bodies that appear in a manifold
   std::vector<PointConstraint> constraints_;  // maxPoints per manifold
 };
 
