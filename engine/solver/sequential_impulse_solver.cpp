@@ -28,6 +28,26 @@ double effectiveMass(double inverseMassSum, const Mat3& inverseInertiaA, const M
 
 }  // namespace
 
+// Current gap at a manifold point, from its anchors on both bodies.
+inline double SequentialImpulseSolver::separation(const ContactManifold& manifold, const ManifoldPoint& point) const {
+  const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
+  return ((b.position + b.rotation * point.localB) - (a.position + a.rotation * point.localA)).dot(manifold.normal);
+}
+
+inline Vec3 SequentialImpulseSolver::relativeVelocity(const ContactManifold& manifold, const PointConstraint& c) const {
+  const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
+  return (b.linearVelocity + b.angularVelocity.cross(c.armB)) - (a.linearVelocity + a.angularVelocity.cross(c.armA));
+}
+
+inline void SequentialImpulseSolver::applyImpulse(const ContactManifold& manifold, const PointConstraint& c,
+                                           const Vec3& impulse) {
+  SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
+  a.linearVelocity -= (a.inverseMass * impulse).cwiseProduct(a.linearMask);
+  a.angularVelocity -= (a.inverseInertia * c.armA.cross(impulse)).cwiseProduct(a.angularMask);
+  b.linearVelocity += (b.inverseMass * impulse).cwiseProduct(b.linearMask);
+  b.angularVelocity += (b.inverseInertia * c.armB.cross(impulse)).cwiseProduct(b.angularMask);
+}
+
 double SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                      std::vector<ContactManifold>& manifolds, double dt,
                                      const SolverSettings& settings) {
@@ -143,25 +163,8 @@ void SequentialImpulseSolver::loadPoses(const std::vector<RigidBody>& bodies) {
   }
 }
 
-// Current gap at a manifold point, from its anchors on both bodies.
-double SequentialImpulseSolver::separation(const ContactManifold& manifold, const ManifoldPoint& point) const {
-  const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-  return ((b.position + b.rotation * point.localB) - (a.position + a.rotation * point.localA)).dot(manifold.normal);
-}
 
-Vec3 SequentialImpulseSolver::relativeVelocity(const ContactManifold& manifold, const PointConstraint& c) const {
-  const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-  return (b.linearVelocity + b.angularVelocity.cross(c.armB)) - (a.linearVelocity + a.angularVelocity.cross(c.armA));
-}
 
-void SequentialImpulseSolver::applyImpulse(const ContactManifold& manifold, const PointConstraint& c,
-                                           const Vec3& impulse) {
-  SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-  a.linearVelocity -= (a.inverseMass * impulse).cwiseProduct(a.linearMask);
-  a.angularVelocity -= (a.inverseInertia * c.armA.cross(impulse)).cwiseProduct(a.angularMask);
-  b.linearVelocity += (b.inverseMass * impulse).cwiseProduct(b.linearMask);
-  b.angularVelocity += (b.inverseInertia * c.armB.cross(impulse)).cwiseProduct(b.angularMask);
-}
 
 void SequentialImpulseSolver::warmStart(const std::vector<ContactManifold>& manifolds) {
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
