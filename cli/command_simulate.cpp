@@ -99,10 +99,11 @@ int runSimulate(const std::vector<std::string>& args) {
               steps, scene.world.dt, world.time());
   std::printf("step time %.4f ms (mean), final kinetic energy %.6g J\n", 1e3 * stepSeconds / steps, kineticEnergy);
   const StepStats& stats = world.lastStepStats();
-  std::printf("last step: %d awake, %d sleeping, %d candidate pairs, %d contacts; narrow phase: %lld fast path, "
-              "%lld GJK, %lld EPA\n",
-              stats.awakeBodies, stats.sleepingBodies, stats.candidatePairs, stats.contacts, stats.narrowPhase.fastPath,
-              stats.narrowPhase.gjk, stats.narrowPhase.epa);
+  std::printf("last step: %d awake (%d with axis locks), %d sleeping, %d candidate pairs, %d contacts, %d manifold "
+              "points, largest penetration %.4g m; narrow phase: %lld fast path, %lld GJK, %lld EPA\n",
+              stats.awakeBodies, stats.lockedBodies, stats.sleepingBodies, stats.candidatePairs, stats.contacts,
+              stats.manifoldPoints, stats.largestPenetration, stats.narrowPhase.fastPath, stats.narrowPhase.gjk,
+              stats.narrowPhase.epa);
   if (parsed->has("--hash")) std::printf("state hash %s\n", hexHash(worldStateHash(world)).c_str());
   for (const NumericalFault& fault : world.numericalFaults()) {
     std::fprintf(stderr, "physdbg simulate: body %u: %s at step %d; body frozen\n", fault.body, fault.what.c_str(),

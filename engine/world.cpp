@@ -104,6 +104,7 @@ void World::applyForces() {
     }
     body.beginStep(settings_.gravity);
     ++stats_.awakeBodies;
+    if (body.hasLocks()) ++stats_.lockedBodies;
   }
 }
 

@@ -58,6 +58,7 @@ struct NumericalFault {
 struct StepStats {
   int awakeBodies = 0;
   int sleepingBodies = 0;
+  int lockedBodies = 0;  // awake bodies with an axis lock: the only ones that do lock work
   int candidatePairs = 0;
   int staticPairsTested = 0;
   int contacts = 0;

@@ -37,6 +37,7 @@ RigidBody::RigidBody(const BodyDefinition& definition)
       lockTranslation_(definition.lockTranslation),
       lockRotation_(definition.lockRotation) {
   if (!collider_) throw std::invalid_argument("body has no collider");
+  for (int axis = 0; axis < 3; ++axis) hasLocks_ = hasLocks_ || lockTranslation_[axis] || lockRotation_[axis];
   if (!isFinite(position_) || !isFinite(linearVelocity_) || !isFinite(angularVelocity_) || !isFinite(orientation_))
     throw std::invalid_argument("body state is not finite");
   if (orientation_.norm() < 1e-12) throw std::invalid_argument("body orientation is a zero quaternion");
@@ -64,12 +65,6 @@ Mat3 RigidBody::worldInverseInertia() const {
   return rotation * localInverseInertia_ * rotation.transpose();
 }
 
-bool RigidBody::hasLocks() const {
-  for (int axis = 0; axis < 3; ++axis) {
-    if (lockTranslation_[axis] || lockRotation_[axis]) return true;
-  }
-  return false;
-}
 
 void RigidBody::addForce(const Vec3& force, ForceMode mode) {
   if (isStatic_) return;
@@ -204,6 +199,7 @@ void RigidBody::rotate(const Vec3& rotation) {
 }
 
 void RigidBody::applyLocks() {
+  if (!hasLocks_) return;
   for (int axis = 0; axis < 3; ++axis) {
     if (lockTranslation_[axis]) linearVelocity_[axis] = 0.0;
     if (lockRotation_[axis]) angularVelocity_[axis] = 0.0;

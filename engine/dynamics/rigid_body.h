@@ -70,7 +70,8 @@ class RigidBody {
   double angularDrag() const { return angularDrag_; }
   const std::array<bool, 3>& lockTranslation() const { return lockTranslation_; }
   const std::array<bool, 3>& lockRotation() const { return lockRotation_; }
-  bool hasLocks() const;
+  // Bodies without locks skip all lock work.
+  bool hasLocks() const { return hasLocks_; }
 
   void addForce(const Vec3& force, ForceMode mode = ForceMode::Force);
   void addTorque(const Vec3& torque, ForceMode mode = ForceMode::Force);
@@ -115,6 +116,7 @@ class RigidBody {
   double linearDrag_, angularDrag_;
   Material material_;
   std::array<bool, 3> lockTranslation_, lockRotation_;
+  bool hasLocks_ = false;
 
   Vec3 forceAccumulator_ = Vec3::Zero();         // N
   Vec3 accelerationAccumulator_ = Vec3::Zero();  // m/s^2
