@@ -11,6 +11,7 @@
 #include "cli/png_writer_pool.h"
 #include "cli/progress_bar.h"
 #include "cli/scene_camera.h"
+#include "cli/scene_overlay.h"
 #include "render/renderer.h"
 #include "scenes/scene.h"
 
@@ -29,6 +30,7 @@ struct RenderSettings {
   int width = 1280, height = 720;
   debugdraw::LayerSet layers;
   std::string video;
+  bool timing = true;  // step time in the overlay; off for repeatable pictures
 };
 
 struct Timings {
@@ -57,16 +59,6 @@ std::string framePath(const std::string& directory, int index) {
   return (fs::path(directory) / name).string();
 }
 
-void addOverlay(const SceneDescription& scene, const World& world, int frame, int frames, double stepMs,
-                debugdraw::Frame& out) {
-  char line[256];
-  std::snprintf(line, sizeof line, "%s   frame %d/%d   t = %.3f s", scene.name.c_str(), frame, frames - 1,
-                world.time());
-  out.texts.push_back({12, 10, 2, line, {1, 1, 1, 1}});
-  std::snprintf(line, sizeof line, "bodies %zu   step %.3f ms", world.bodyCount(), stepMs);
-  out.texts.push_back({12, 34, 2, line, {0.85f, 0.85f, 0.85f, 1}});
-}
-
 void encodeVideo(const std::string& directory, const std::string& video, double framesPerSecond) {
   char command[2048];
   std::snprintf(command, sizeof command,
@@ -88,6 +80,7 @@ RenderSettings readSettings(const Arguments& arguments, const SceneDescription& 
   } catch (const std::invalid_argument& error) {
     throw UsageError(std::string("--layers: ") + error.what());
   }
+  settings.timing = !arguments.has("--no-timing");
   settings.video = arguments.value("--video");
   if (!settings.video.empty() && !ffmpegAvailable())
     throw UsageError("--video: ffmpeg is not installed (apt-get install ffmpeg); the PNG frames need no ffmpeg");
@@ -108,7 +101,8 @@ int runRender(const std::vector<std::string>& args) {
        {"--layers", "", "LIST", "comma list of debug layers: shapes, wire, aabbs, overlay, ... (default: the "
                                  "scene's, else shapes,aabbs,overlay)"},
        {"--steps-per-frame", "", "K", "simulation steps between frames (default 1)"},
-       {"--video", "", "FILE.mp4", "also encode the frames into a video with ffmpeg"}},
+       {"--video", "", "FILE.mp4", "also encode the frames into a video with ffmpeg"},
+       {"--no-timing", "", "", "leave the measured step time out of the overlay (repeatable frames)"}},
       1,
       1};
   auto parsed = Arguments::parse(spec, args);
@@ -145,7 +139,9 @@ int runRender(const std::vector<std::string>& args) {
       camera = chooseCamera(scene, framing, double(settings.width) / settings.height);
     }
     if (settings.layers.has(debugdraw::Layer::Overlay))
-      addOverlay(scene, world, frameIndex, settings.frames, lastStepMs, frame);
+      addOverlay(scene, world,
+                 {frameIndex, settings.frames - 1, settings.timing ? std::optional<double>(lastStepMs) : std::nullopt},
+                 frame);
     render::Image image = renderer.render(frame, *camera);
     timings.draw += secondsSince(start);
     writers.submit(framePath(settings.outputDirectory, frameIndex), std::move(image));

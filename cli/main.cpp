@@ -21,6 +21,8 @@ const std::vector<Subcommand>& subcommands() {
       {"contacts", "every contact of a scene's initial state: normal, depth, points (JSON)",
        physdbg::cli::runContacts},
       {"bench", "run benchmarks side by side with peer engines, print JSON", physdbg::cli::runBench},
+      {"compare", "compare two PNGs like the golden tests; prints figures, writes a diff image",
+       physdbg::cli::runCompare},
   };
   return commands;
 }

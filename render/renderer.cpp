@@ -113,6 +113,15 @@ class Renderer::Impl {
 
   const RendererOptions& options() const { return options_; }
 
+  GlIdentity glIdentity() {
+    context_->makeCurrent();
+    auto text = [](GLenum name) {
+      const GLubyte* value = glGetString(name);
+      return value ? std::string(reinterpret_cast<const char*>(value)) : std::string("?");
+    };
+    return {text(GL_RENDERER), text(GL_VERSION)};
+  }
+
  private:
   void setUpState() {
     glClearColor(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
@@ -207,5 +216,7 @@ Renderer::~Renderer() = default;
 Image Renderer::render(const debugdraw::Frame& frame, const Camera& camera) { return impl_->render(frame, camera); }
 
 const RendererOptions& Renderer::options() const { return impl_->options(); }
+
+GlIdentity Renderer::glIdentity() const { return impl_->glIdentity(); }
 
 }  // namespace physdbg::render

@@ -2,6 +2,7 @@
 // Off-screen renderer for debug-draw frames. Knows nothing of physics: it draws
 // the primitives of a Frame, each kind with one instanced draw call.
 #include <memory>
+#include <string>
 
 #include "debugdraw/primitives.h"
 #include "render/camera.h"
@@ -14,6 +15,10 @@ struct RendererOptions {
   // MSAA samples, 0 = off. Off by default: on llvmpipe 4x costs several times
   // the draw time (see render/README.md for measurements).
   int samples = 0;
+};
+
+struct GlIdentity {
+  std::string renderer, version;
 };
 
 class Renderer {
@@ -30,6 +35,10 @@ class Renderer {
   Image render(const debugdraw::Frame& frame, const Camera& camera);
 
   const RendererOptions& options() const;
+
+  // GL_RENDERER and GL_VERSION of the context, e.g. "llvmpipe (LLVM 15.0.6,
+  // 256 bits)" and "4.5 (Core Profile) Mesa 22.3.6": golden images are keyed by them.
+  GlIdentity glIdentity() const;
 
  private:
   class Impl;

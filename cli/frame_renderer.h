@@ -1,0 +1,28 @@
+#pragma once
+// One repeatable frame of a scene: simulate a number of steps, emit the chosen
+// debug layers (with an overlay free of wall-clock values) and render them.
+// Shared by golden-image tests and their update tool; the pieces are separate
+// so tests can perturb the world or the frame before drawing.
+#include "debugdraw/primitives.h"
+#include "render/camera.h"
+#include "render/image.h"
+#include "render/renderer.h"
+#include "scenes/scene.h"
+
+namespace physdbg::cli {
+
+// Throws std::invalid_argument for negative steps, SceneError for a bad scene.
+World simulateScene(const SceneDescription& scene, int steps);
+
+// The camera `render` uses: framed on the scene's initial shapes.
+render::Camera sceneCamera(const SceneDescription& scene, double aspect);
+
+// The world's primitives for `layers`; the overlay (when asked for) names the
+// scene, step, simulated time and body count.
+debugdraw::Frame sceneFrame(const SceneDescription& scene, const World& world, debugdraw::LayerSet layers);
+
+// All of the above at the renderer's size.
+render::Image renderSceneFrame(render::Renderer& renderer, const SceneDescription& scene, int steps,
+                               debugdraw::LayerSet layers);
+
+}  // namespace physdbg::cli

@@ -1,0 +1,19 @@
+#pragma once
+// The overlay text of a rendered frame. Without a step time the text depends
+// only on the simulation, so golden images can include it.
+#include <optional>
+
+#include "debugdraw/primitives.h"
+#include "scenes/scene.h"
+
+namespace physdbg::cli {
+
+struct OverlayCounters {
+  std::optional<int> frame, frames;  // "frame 3/10" when both are given
+  std::optional<double> stepMs;      // measured wall-clock time: leave empty for repeatable pictures
+};
+
+void addOverlay(const SceneDescription& scene, const World& world, const OverlayCounters& counters,
+                debugdraw::Frame& out);
+
+}  // namespace physdbg::cli

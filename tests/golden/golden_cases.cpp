@@ -1,0 +1,52 @@
+#include "tests/golden/golden_cases.h"
+
+#include <stdexcept>
+
+#include "scenes/stacking_scenes.h"
+
+namespace physdbg::golden {
+namespace {
+
+std::function<SceneDescription()> builtin(const std::string& name) {
+  return [name] { return resolveScene(name); };
+}
+
+// A closer 3/4 view than the default framing, which fits the whole floor slab.
+std::function<SceneDescription()> closeUp(SceneDescription (*make)(int), int size, const Vec3& target,
+                                          double distance) {
+  return [=] {
+    SceneDescription scene = make(size);
+    scene.camera = SceneCamera{target + distance * Vec3(0.6, 0.45, 1.0).normalized(), target};
+    return scene;
+  };
+}
+
+SceneDescription pyramid(int base) { return pyramidScene(base); }
+
+}  // namespace
+
+const std::vector<GoldenCase>& goldenCases() {
+  static const std::vector<GoldenCase> cases = {
+      // Solid and wire shapes of every common collider, and the overlay text.
+      {"default_shapes_wire_overlay", builtin("default"), 45, "shapes,wire,overlay"},
+      // Resting contacts: red AABBs of touching bodies, contact points and normals.
+      {"stack_aabbs_contacts", closeUp(stackScene, 4, Vec3(0, 2, 0), 9.0), 30, "shapes,aabbs,contacts"},
+      // The broad phase: fat boxes and the tree's internal nodes.
+      {"balls24_fat_tree", builtin("balls24"), 40, "wire,fat,tree"},
+      // Moving bodies: velocity arrows and candidate pairs (wire, so solids hide neither).
+      {"balls24_velocities_pairs", builtin("balls24"), 40, "wire,velocities,pairs"},
+      // Sleeping bodies (darker) once a small pyramid has settled.
+      {"pyramid_sleep", closeUp(pyramid, 4, Vec3(0, 1.8, 0), 8.5), 90, "shapes,sleep,aabbs"},
+      // TODO(tree-rotation view): add the `physdbg tree` rotation view here once
+      // it lands, e.g. {"tree_rotations", ..., "tree"} drawn with drawRotations.
+  };
+  return cases;
+}
+
+const GoldenCase& goldenCase(const std::string& name) {
+  for (const GoldenCase& candidate : goldenCases())
+    if (candidate.name == name) return candidate;
+  throw std::invalid_argument("no golden case named '" + name + "'");
+}
+
+}  // namespace physdbg::golden
