@@ -17,5 +17,8 @@ int runSimulate(const std::vector<std::string>& args);
 int runRender(const std::vector<std::string>& args);
 int runContacts(const std::vector<std::string>& args);
 int runBench(const std::vector<std::string>& args);
+int runTree(const std::vector<std::string>& args);
+int runRecord(const std::vector<std::string>& args);
+int runReplay(const std::vector<std::string>& args);
 
 }  // namespace physdbg::cli

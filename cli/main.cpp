@@ -20,6 +20,10 @@ const std::vector<Subcommand>& subcommands() {
       {"render", "simulate a scene and write a PNG frame sequence (and an MP4)", physdbg::cli::runRender},
       {"contacts", "every contact of a scene's initial state: normal, depth, points (JSON)",
        physdbg::cli::runContacts},
+      {"tree", "frame pairs before/after each tree rotation, hierarchy diagram, SAR/height plot",
+       physdbg::cli::runTree},
+      {"record", "simulate a scene and write its debug-draw primitive stream to a file", physdbg::cli::runRecord},
+      {"replay", "render a recording (or a frame range of it) to PNGs, no engine needed", physdbg::cli::runReplay},
       {"bench", "run benchmarks side by side with peer engines, print JSON", physdbg::cli::runBench},
   };
   return commands;
