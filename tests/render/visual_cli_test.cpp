@@ -60,12 +60,40 @@ TEST(VisualCli, TreeWritesFramePairsAndThePlot) {
   EXPECT_NE(result.output.find("rotations"), std::string::npos) << result.output;
 }
 
+int countBluish(const physdbg::render::Image& image) {
+  int count = 0;
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+    count += image.rgba[i + 2] > 200 && image.rgba[i] < 200 && image.rgba[i + 1] < 240;
+  return count;
+}
+
+TEST(VisualCli, TreeDepthLimitsTheTreeLayer) {
+  ScratchFolder folder;
+  const std::string common = "render pyramid --frames 1 --size 160x96 --layers tree -o ";
+  ASSERT_EQ(runPhysdbg(common + (folder / "all")).exitCode, 0);
+  ASSERT_EQ(runPhysdbg(common + (folder / "root") + " --tree-depth 0:0").exitCode, 0);
+  ASSERT_EQ(runPhysdbg(common + (folder / "none") + " --tree-depth 90:").exitCode, 0);
+  const int all = countBluish(physdbg::render::readPng(folder / "all/frame_00000.png"));
+  const int root = countBluish(physdbg::render::readPng(folder / "root/frame_00000.png"));
+  const int none = countBluish(physdbg::render::readPng(folder / "none/frame_00000.png"));
+  EXPECT_GT(root, 20);   // the root box is drawn
+  EXPECT_GT(all, root);  // deeper boxes add lines
+  EXPECT_EQ(none, 0);    // no node is 90 deep
+}
+
 TEST(VisualCli, FollowKeepsTheBodyAtTheCentre) {
   ScratchFolder folder;
-  // Frame 0 and a later frame differ in camera, but both render without error.
+  // bounce drops spheres onto a floor; body 1 is a sphere, falling between frames.
   const Result result = runPhysdbg("render bounce --frames 3 --steps-per-frame 20 --size 96x64 --layers shapes "
                                    "--follow 1 -o " + (folder / "follow"));
   ASSERT_EQ(result.exitCode, 0) << result.output;
+  for (const char* name : {"frame_00000.png", "frame_00002.png"}) {
+    const physdbg::render::Image image = physdbg::render::readPng(folder / ("follow/" + std::string(name)));
+    const std::size_t centre = (static_cast<std::size_t>(image.height / 2) * image.width + image.width / 2) * 4;
+    const bool background = std::abs(image.rgba[centre] - 28) <= 1 && std::abs(image.rgba[centre + 1] - 31) <= 1 &&
+                            std::abs(image.rgba[centre + 2] - 36) <= 1;
+    EXPECT_FALSE(background) << name << ": the followed body should cover the centre";
+  }
   const Result ortho = runPhysdbg("render bounce --frames 1 --size 96x64 --layers shapes --ortho --eye 0,30,0.1 "
                                   "--target 0,0,0 --fov 30 -o " + (folder / "ortho"));
   ASSERT_EQ(ortho.exitCode, 0) << ortho.output;
