@@ -37,7 +37,7 @@ int runRender(const std::vector<std::string>& args) {
   CommandSpec spec{
       "render",
       "SCENE [-o DIR] [--frames N|A:B] [--size WxH] [--layers LIST] [--steps-per-frame K] [--video FILE.mp4] "
-      "[camera options]",
+      "[camera options] [--backend osmesa|egl]",
       "Simulates SCENE (a built-in name or a scene file) and writes DIR/frame_00000.png, frame_00001.png, ...\n"
       "Frame 0 is the initial state; each later frame advances K steps. With --frames A:B only frames A..B-1\n"
       "are drawn (earlier ones are simulated), so several processes can render one run into one folder.",
@@ -46,6 +46,7 @@ int runRender(const std::vector<std::string>& args) {
       1,
       1};
   for (const OptionSpec& option : viewOptionSpecs()) spec.options.push_back(option);
+  spec.options.push_back(backendOptionSpec());
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const SceneDescription scene = resolveScene(parsed->positional()[0]);
@@ -57,7 +58,7 @@ int runRender(const std::vector<std::string>& args) {
   prepareOutputDirectory(outputDirectory);
 
   SceneFrames frames(scene, options);
-  render::Renderer renderer({options.width, options.height, 0});
+  render::Renderer renderer({options.width, options.height, 0, readBackend(*parsed)});
   const unsigned cores = std::max(2u, std::thread::hardware_concurrency());
   PngWriterPool writers(static_cast<int>(cores - 1), 2 * cores);
   ProgressBar progress("render " + scene.name, options.frames.count());

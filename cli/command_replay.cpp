@@ -18,12 +18,13 @@ namespace physdbg::cli {
 int runReplay(const std::vector<std::string>& args) {
   const CommandSpec spec{
       "replay",
-      "FILE -o DIR [--frames N|A:B] [--size WxH]",
+      "FILE -o DIR [--frames N|A:B] [--size WxH] [--backend osmesa|egl]",
       "Renders the frames of a recording made by 'physdbg record' to DIR/frame_NNNNN.png, numbered as\n"
       "recorded. With --frames A:B only recorded frames A..B-1 are decoded and drawn.",
       {{"--output", "-o", "DIR", "output folder (required)"},
        {"--frames", "", "N|A:B", "frames 0..N-1 or A..B-1 (default all)"},
-       {"--size", "", "WxH", "image size in pixels (default 1280x720)"}},
+       {"--size", "", "WxH", "image size in pixels (default 1280x720)"},
+       backendOptionSpec()},
       1,
       1};
   auto parsed = Arguments::parse(spec, args);
@@ -36,7 +37,7 @@ int runReplay(const std::vector<std::string>& args) {
   const std::string directory = parsed->value("--output");
   prepareOutputDirectory(directory);
 
-  render::Renderer renderer({width, height, 0});
+  render::Renderer renderer({width, height, 0, readBackend(*parsed)});
   const unsigned cores = std::max(2u, std::thread::hardware_concurrency());
   PngWriterPool writers(static_cast<int>(cores - 1), 2 * cores);
   debugdraw::RecordedFrame frame;

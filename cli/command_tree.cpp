@@ -13,6 +13,7 @@
 #include "cli/output_folder.h"
 #include "cli/pixel_canvas.h"
 #include "cli/tree_diagram.h"
+#include "cli/view_options.h"
 #include "render/renderer.h"
 #include "scenes/scene.h"
 
@@ -223,7 +224,7 @@ TreeViewSettings readSettings(const Arguments& arguments, const SceneDescription
 int runTree(const std::vector<std::string>& args) {
   const CommandSpec spec{
       "tree",
-      "SCENE [-o DIR] [--size WxH] [--max-events N] [--steps K] [--margin M]",
+      "SCENE [-o DIR] [--size WxH] [--max-events N] [--steps K] [--margin M] [--backend osmesa|egl]",
       "Inserts SCENE's bodies one by one into a dynamic AABB tree and writes, for each insertion (and with\n"
       "--steps, each reinsertion) whose refit walk rotates, DIR/event_NNN_before.png and event_NNN_after.png:\n"
       "the 3D boxes beside the hierarchy diagram, with the swapped subtrees highlighted. 'Before' is the tree\n"
@@ -233,7 +234,8 @@ int runTree(const std::vector<std::string>& args) {
        {"--size", "", "WxH", "size of each of the two panels (default 640x480)"},
        {"--max-events", "", "N", "write at most N frame pairs (default 12)"},
        {"--steps", "", "K", "then simulate K steps and show reinsertions that rotate"},
-       {"--margin", "", "M", "fat-box margin of the tree (default 0.1)"}},
+       {"--margin", "", "M", "fat-box margin of the tree (default 0.1)"},
+       backendOptionSpec()},
       1,
       1};
   auto parsed = Arguments::parse(spec, args);
@@ -244,7 +246,7 @@ int runTree(const std::vector<std::string>& args) {
 
   std::vector<Aabb> boxes;
   const std::vector<TreeEvent> events = collectEvents(scene, settings, boxes);
-  render::Renderer renderer({settings.width, settings.height, 0});
+  render::Renderer renderer({settings.width, settings.height, 0, readBackend(*parsed)});
   Panels panels{renderer, settings};
   const int written = std::min(settings.maxEvents, static_cast<int>(events.size()));
   for (int i = 0; i < written; ++i) {

@@ -35,6 +35,18 @@ std::vector<OptionSpec> viewOptionSpecs() {
           {"--ortho", "", "", "orthographic projection"}};
 }
 
+OptionSpec backendOptionSpec() {
+  return {"--backend", "", "osmesa|egl", "GL context: OSMesa (default) or EGL without a surface (Mesa 25.1+, GPUs)"};
+}
+
+render::Backend readBackend(const Arguments& arguments) {
+  try {
+    return render::parseBackend(arguments.value("--backend", "osmesa"));
+  } catch (const std::invalid_argument& error) {
+    throw UsageError(std::string("--backend: ") + error.what());
+  }
+}
+
 FrameRange parseFrameRange(const std::string& text, const std::string& option) {
   const std::size_t colon = text.find(':');
   FrameRange range;

@@ -7,6 +7,7 @@
 
 #include "cli/arguments.h"
 #include "debugdraw/primitives.h"
+#include "render/renderer.h"
 #include "scenes/scene.h"
 
 namespace physdbg::cli {
@@ -37,6 +38,11 @@ FrameRange parseFrameRange(const std::string& text, const std::string& option);
 std::pair<int, int> parseDepthRange(const std::string& text, const std::string& option);
 // "x,y,z". Throws UsageError naming `option`.
 Vec3 parseVector(const std::string& text, const std::string& option);
+
+// --backend osmesa|egl, for the commands that render.
+OptionSpec backendOptionSpec();
+// The --backend choice (default osmesa); throws UsageError naming the choices.
+render::Backend readBackend(const Arguments& arguments);
 
 // Throws UsageError for bad values, including a --follow body the scene lacks.
 ViewOptions readViewOptions(const Arguments& arguments, const SceneDescription& scene);
