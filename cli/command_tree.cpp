@@ -94,7 +94,7 @@ render::Image renderEventFrame(Panels& panels, const TreeEvent& event, bool afte
   const TreeHighlight highlight = highlightOf(event);
   dd::Frame boxes;
   drawTreeBoxes(tree, highlight, panels.settings.margin, boxes);
-  boxes.texts.push_back({10, 8, 1.5f, "3D: leaves solid, internal nodes wire, framed on the pivots", {1, 1, 1, 1}});
+  boxes.texts.push_back({10, 8, 1.5f, "3D: below the pivots, leaves solid and internal nodes wire", {1, 1, 1, 1}});
   const render::Image view = panels.renderer.render(boxes, camera);
   dd::Frame diagram;
   const int width = panels.settings.width, height = panels.settings.height;

@@ -101,16 +101,26 @@ void drawTreeBoxes(const TreeSnapshot& tree, const TreeHighlight& highlight, dou
   const std::vector<int> depth = tree.depths();
   const int maxDepth = std::max(1, tree.height());
   const std::vector<const dd::Color*> colors = highlightColors(tree, highlight);
+  // Below the pivots is everything a rotation touched; the rest is context,
+  // drawn as faint wire so large static boxes do not hide the swap.
+  std::vector<bool> focus(tree.nodes.size(), highlight.pivots.empty());
+  for (const int pivot : highlight.pivots)
+    for (const int node : tree.subtree(pivot)) focus[node] = true;
   for (std::size_t node = 0; node < tree.nodes.size(); ++node) {
     if (!tree.nodes[node].used || depth[node] < 0) continue;
     const int id = static_cast<int>(node);
     const Aabb& box = tree.nodes[id].box;
     if (tree.isLeaf(id)) {
       const Vec3 half = (box.halfExtents().array() - margin).max(0.01 * box.halfExtents().array());
+      if (!focus[id]) {
+        frame.wireBoxes.push_back({box.center(), dd::Quat::Identity(), half, {0.4f, 0.4f, 0.42f, 1.0f}});
+        continue;
+      }
       const dd::Color color = colors[id] ? *colors[id] : dd::Color{0.6f, 0.6f, 0.62f, 1.0f};
       frame.boxes.push_back({box.center(), dd::Quat::Identity(), half, color});
       continue;
     }
+    if (!focus[id]) continue;
     const dd::Color color = colors[id] ? *colors[id] : depthColor(depth[id], maxDepth);
     // Shallower boxes a little larger, so nested boxes with equal faces stay apart.
     const double grow = 1.0 + 0.02 * (maxDepth - depth[id]);

@@ -33,8 +33,9 @@ struct TreeHighlight {
 void drawTreeDiagram(const TreeSnapshot& tree, const TreeHighlight& highlight, double left, double top,
                      double width, double height, debugdraw::Frame& frame);
 
-// Leaves as solid boxes shrunk by `margin` (the bodies' tight boxes), internal
-// nodes as wire boxes coloured by depth, highlighted subtrees in their colours.
+// Below the pivots: leaves as solid boxes shrunk by `margin` (the bodies'
+// tight boxes), internal nodes as wire boxes coloured by depth, highlighted
+// subtrees in their colours. Elsewhere only the leaves, as faint wire.
 void drawTreeBoxes(const TreeSnapshot& tree, const TreeHighlight& highlight, double margin, debugdraw::Frame& frame);
 
 }  // namespace physdbg::cli
