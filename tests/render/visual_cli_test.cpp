@@ -29,10 +29,20 @@ TEST(VisualCli, BadArgumentsExitTwoNamingTheProblem) {
                         Case{"render bounce --fov 200" + out, "--fov"},
                         Case{"render bounce --eye 0,0,0 --target 0,0,0" + out, "camera"},
                         Case{"tree bounce --size 100x100" + out, "--size"},
+                        Case{"render bounce --backend vulkan" + out, "--backend"},
+                        Case{"replay run.rec --backend" + out, "--backend"},
                         Case{"tree bounce --max-events 0" + out, "--max-events"}}) {
     const Result result = runPhysdbg(c.arguments);
     EXPECT_EQ(result.exitCode, 2) << c.arguments << "\n" << result.output;
     EXPECT_NE(result.output.find(c.mentions), std::string::npos) << c.arguments << "\n" << result.output;
+  }
+}
+
+TEST(VisualCli, HelpExitsZeroForTheVisualCommands) {
+  for (const char* command : {"tree --help", "record --help", "replay --help"}) {
+    const Result result = runPhysdbg(command);
+    EXPECT_EQ(result.exitCode, 0) << command << "\n" << result.output;
+    EXPECT_NE(result.output.find("usage: physdbg"), std::string::npos) << command;
   }
 }
 
