@@ -5,6 +5,9 @@
 namespace physdbg::bench {
 
 Benchmark narrowBenchmark();
+#ifdef PHYSDBG_HAVE_RENDER
+Benchmark renderBenchmark();
+#endif
 
 // Each benchmark lives in its own file and is listed here, in output order.
 std::vector<Benchmark> allBenchmarks() {
@@ -13,6 +16,9 @@ std::vector<Benchmark> allBenchmarks() {
   benchmarks.push_back(narrowBenchmark());
   benchmarks.push_back({"seed", "step time of the design's scenes: tree against brute force, 24 against 48 balls",
                         runSeedBenchmark});
+#ifdef PHYSDBG_HAVE_RENDER
+  benchmarks.push_back(renderBenchmark());
+#endif
   return benchmarks;
 }
 

@@ -18,5 +18,8 @@ int runRender(const std::vector<std::string>& args);
 int runContacts(const std::vector<std::string>& args);
 int runBench(const std::vector<std::string>& args);
 int runCompare(const std::vector<std::string>& args);
+int runTree(const std::vector<std::string>& args);
+int runRecord(const std::vector<std::string>& args);
+int runReplay(const std::vector<std::string>& args);
 
 }  // namespace physdbg::cli

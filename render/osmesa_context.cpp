@@ -8,13 +8,19 @@
 #endif
 #include <GL/osmesa.h>
 
+#include <cstring>
 #include <stdexcept>
 #include <vector>
 
 #include "render/gl_context.h"
 
+// With an EGL context current (the EGL backend), GL names go to EGL; GLX names
+// never do, since EGL hands out dispatch stubs that crash without an X display.
 extern "C" __attribute__((visibility("default"))) void (*glXGetProcAddressARB(const GLubyte* name))() {
-  return reinterpret_cast<void (*)()>(OSMesaGetProcAddress(reinterpret_cast<const char*>(name)));
+  const char* text = reinterpret_cast<const char*>(name);
+  if (std::strncmp(text, "glX", 3) != 0)
+    if (auto procedure = physdbg::render::eglProcedureIfCurrent(text)) return procedure;
+  return reinterpret_cast<void (*)()>(OSMesaGetProcAddress(text));
 }
 
 namespace physdbg::render {

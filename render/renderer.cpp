@@ -76,7 +76,7 @@ class Renderer::Impl {
  public:
   explicit Impl(const RendererOptions& options)
       : options_(options),
-        context_(createOsMesaContext()),
+        context_(options.backend == Backend::Egl ? createEglContext() : createOsMesaContext()),
         solid_(createProgram(shaders::kSolidVertex, shaders::kSolidFragment, "solid")),
         wire_(createProgram(shaders::kWireVertex, shaders::kUnlitFragment, "wire")),
         line_(createProgram(shaders::kLineVertex, shaders::kUnlitFragment, "line")),
@@ -205,6 +205,12 @@ class Renderer::Impl {
   MeshCache meshCache_;
   RenderTarget target_;
 };
+
+Backend parseBackend(const std::string& name) {
+  if (name == "osmesa") return Backend::OsMesa;
+  if (name == "egl") return Backend::Egl;
+  throw std::invalid_argument("unknown GL backend '" + name + "' (choose osmesa or egl)");
+}
 
 Renderer::Renderer(const RendererOptions& options) {
   validate(options);

@@ -10,11 +10,19 @@
 
 namespace physdbg::render {
 
+// Where the GL context comes from. OSMesa is removed from Mesa 25.1 onwards;
+// EGL (surfaceless or a device) works there and on GPU machines.
+enum class Backend { OsMesa, Egl };
+
+// "osmesa" or "egl"; throws std::invalid_argument naming the choices.
+Backend parseBackend(const std::string& name);
+
 struct RendererOptions {
   int width = 1280, height = 720;
   // MSAA samples, 0 = off. Off by default: on llvmpipe 4x costs several times
   // the draw time (see render/README.md for measurements).
   int samples = 0;
+  Backend backend = Backend::OsMesa;
 };
 
 struct GlIdentity {

@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config ccache
   libeigen3-dev nlohmann-json3-dev libgtest-dev
-  libosmesa6-dev libglew-dev libstb-dev libpng-dev
+  libosmesa6-dev libglew-dev libstb-dev libpng-dev libegl-dev libegl-mesa0
   libbullet-dev libccd-dev
 )
 missing=()

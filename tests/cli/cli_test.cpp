@@ -9,28 +9,16 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "../render/visual_test_support.h"
 #include "render/image.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exitCode = -1;
-  std::string output;  // stdout and stderr together
-};
+using physdbg::visualtesting::Result;
 
-Result run(const std::string& arguments) {
-  const std::string command = std::string("LP_NUM_THREADS=1 ") + PHYSDBG_BINARY + " " + arguments + " 2>&1";
-  Result result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer{};
-  while (const std::size_t read = fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), read);
-  const int status = pclose(pipe);
-  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+Result run(const std::string& arguments) { return physdbg::visualtesting::runPhysdbg(arguments); }
 
 class TempDir {
  public:

@@ -1,0 +1,50 @@
+// physdbg record: simulates a scene and writes every frame's primitives and
+// view to a recording (debugdraw/recording.h), without rendering.
+#include <cstdio>
+
+#include "cli/arguments.h"
+#include "cli/commands.h"
+#include "cli/progress_bar.h"
+#include "cli/scene_frames.h"
+#include "debugdraw/recording.h"
+#include "scenes/scene.h"
+
+namespace physdbg::cli {
+
+int runRecord(const std::vector<std::string>& args) {
+  CommandSpec spec{
+      "record",
+      "SCENE -o FILE [--frames N|A:B] [--size WxH] [--layers LIST] [--steps-per-frame K] [camera options]",
+      "Simulates SCENE and writes the debug-draw primitives and the view of every frame to FILE (format:\n"
+      "debugdraw/RECORDING.md). 'physdbg replay FILE' renders it later; --size sets the aspect the camera\n"
+      "frames for.",
+      {{"--output", "-o", "FILE", "recording to write (required)"}},
+      1,
+      1};
+  for (const OptionSpec& option : viewOptionSpecs()) spec.options.push_back(option);
+  auto parsed = Arguments::parse(spec, args);
+  if (!parsed) return 0;
+  if (!parsed->has("--output")) throw UsageError("-o FILE is required");
+  const SceneDescription scene = resolveScene(parsed->positional()[0]);
+  const ViewOptions options = readViewOptions(*parsed, scene);
+  const std::string path = parsed->value("--output");
+  std::unique_ptr<debugdraw::RecordingWriter> writer;
+  try {
+    writer = std::make_unique<debugdraw::RecordingWriter>(path);
+  } catch (const std::runtime_error& error) {
+    throw UsageError(std::string("-o: ") + error.what());
+  }
+  SceneFrames frames(scene, options);
+  ProgressBar progress("record " + scene.name, options.frames.count());
+  for (int index = options.frames.first; index < options.frames.last; ++index) {
+    writer->write(frames.frame(index));
+    progress.update(index - options.frames.first + 1);
+  }
+  writer->close();
+  progress.finish();
+  std::printf("recorded frames %d..%d of %s to %s\n", options.frames.first, options.frames.last - 1,
+              scene.name.c_str(), path.c_str());
+  return frames.world().numericalFaults().empty() ? 0 : 1;
+}
+
+}  // namespace physdbg::cli

@@ -1,0 +1,271 @@
+// physdbg tree: what the broad-phase tree's rotations do. The scene's bodies
+// are inserted one by one into a tree of our own with the rotation log on;
+// every insertion (and, with --steps, every reinsertion) that rotates gives a
+// before/after pair: 3D boxes beside the hierarchy diagram. A plot compares
+// SAR and height against insertion count with and without rotations.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "cli/arguments.h"
+#include "cli/commands.h"
+#include "cli/line_plot.h"
+#include "cli/output_folder.h"
+#include "cli/pixel_canvas.h"
+#include "cli/tree_diagram.h"
+#include "cli/view_options.h"
+#include "render/renderer.h"
+#include "scenes/scene.h"
+
+namespace physdbg::cli {
+namespace {
+
+namespace dd = debugdraw;
+namespace fs = std::filesystem;
+
+struct TreeViewSettings {
+  std::string outputDirectory;
+  int width = 640, height = 480;  // of each panel
+  int maxEvents = 12;
+  int steps = 0;
+  double margin = 0.1;
+};
+
+struct TreeEvent {
+  std::string what;  // "insertion 12 (body 11)"
+  TreeSnapshot before, after;
+  std::vector<RotationEvent> rotations;
+  int leaf = DynamicAabbTree::nullNode;
+};
+
+struct Panels {
+  render::Renderer& renderer;
+  const TreeViewSettings& settings;
+};
+
+TreeHighlight highlightOf(const TreeEvent& event) {
+  TreeHighlight highlight;
+  highlight.newLeaf = event.leaf;
+  for (const RotationEvent& rotation : event.rotations) {
+    highlight.movedDown.push_back(rotation.first);
+    highlight.movedUp.push_back(rotation.second);
+    highlight.pivots.push_back(rotation.node);
+    highlight.reshaped.push_back(event.after.nodes[rotation.first].parent);
+  }
+  return highlight;
+}
+
+std::string stateLine(const char* label, const TreeSnapshot& tree) {
+  char line[128];
+  std::snprintf(line, sizeof line, "%s SAR %.3f  height %d", label, tree.surfaceAreaRatio(), tree.height());
+  return line;
+}
+
+void addLegend(const TreeEvent& event, bool after, int height, dd::Frame& frame) {
+  const std::string title = event.what + (after ? ": AFTER " : ": BEFORE ") + std::to_string(event.rotations.size()) +
+                            (event.rotations.size() == 1 ? " rotation" : " rotations");
+  frame.texts.push_back({10, 8, 2, title, {1, 1, 1, 1}});
+  frame.texts.push_back({10, 30, 1.5f, stateLine("before:", event.before), after ? dd::Color{0.7f, 0.7f, 0.7f, 1}
+                                                                                 : dd::Color{1, 1, 1, 1}});
+  frame.texts.push_back({10, 46, 1.5f, stateLine("after: ", event.after), after ? dd::Color{1, 1, 1, 1}
+                                                                                : dd::Color{0.7f, 0.7f, 0.7f, 1}});
+  float y = 62;
+  for (const RotationEvent& rotation : event.rotations) {
+    const int node = event.after.nodes[rotation.first].parent;
+    char line[160];
+    std::snprintf(line, sizeof line, "orange box (node %d) area %.3g -> %.3g", node,
+                  event.before.nodes[node].box.surfaceArea(), event.after.nodes[node].box.surfaceArea());
+    frame.texts.push_back({10, y, 1.5f, line, treecolors::reshaped});
+    y += 14;
+  }
+  y = static_cast<float>(height - 20);
+  float x = 10;
+  for (const auto& [text, color] : {std::pair{"moved down", treecolors::movedDown}, {"moved up", treecolors::movedUp},
+                                    {"pivot", treecolors::pivot}, {"shrunk box", treecolors::reshaped},
+                                    {"new leaf", treecolors::newLeaf},
+                                    {"depth: blue..red", depthColor(0, 1)}}) {
+    frame.texts.push_back({x, y, 1.5f, text, color});
+    x += 9.0f * static_cast<float>(std::string(text).size()) + 18.0f;
+  }
+}
+
+render::Image renderEventFrame(Panels& panels, const TreeEvent& event, bool after, const render::Camera& camera) {
+  const TreeSnapshot& tree = after ? event.after : event.before;
+  const TreeHighlight highlight = highlightOf(event);
+  dd::Frame boxes;
+  drawTreeBoxes(tree, highlight, panels.settings.margin, boxes);
+  boxes.texts.push_back({10, 8, 1.5f, "3D: below the pivots, leaves solid and internal nodes wire", {1, 1, 1, 1}});
+  const render::Image view = panels.renderer.render(boxes, camera);
+  dd::Frame diagram;
+  const int width = panels.settings.width, height = panels.settings.height;
+  drawTreeDiagram(tree, highlight, 10, 62 + 14.0 * event.rotations.size(), width - 20,
+                  height - 92 - 14.0 * event.rotations.size(), diagram);
+  addLegend(event, after, height, diagram);
+  return sideBySide(view, panels.renderer.render(diagram, pixelCamera(width, height)));
+}
+
+// Frames the pivots' boxes (everything a rotation touched lies inside them),
+// so a small swap is not lost next to a large floor.
+render::Camera treeCamera(const TreeEvent& event, double aspect) {
+  render::Bounds bounds;
+  for (const RotationEvent& rotation : event.rotations) {
+    const Aabb& box = event.after.nodes[rotation.node].box;
+    const Vec3 margin = 0.15 * (box.max - box.min) + Vec3::Constant(0.5);
+    bounds.extend(box.min - margin);
+    bounds.extend(box.max + margin);
+  }
+  return render::frameBoundsCamera(bounds, aspect);
+}
+
+std::vector<Aabb> bodyBoxes(const World& world) {
+  std::vector<Aabb> boxes;
+  for (const RigidBody& body : world.bodies()) boxes.push_back(body.collider().worldBounds(body.transform()));
+  return boxes;
+}
+
+struct Curves {
+  std::vector<double> sar, height;
+};
+
+Curves insertionCurves(const std::vector<Aabb>& boxes, const DynamicAabbTreeOptions& options) {
+  DynamicAabbTree tree(options);
+  Curves curves;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    tree.createProxy(boxes[i], static_cast<std::uint32_t>(i));
+    curves.sar.push_back(tree.surfaceAreaRatio());
+    curves.height.push_back(tree.height());
+  }
+  return curves;
+}
+
+void writePlot(const std::vector<Aabb>& boxes, const TreeViewSettings& settings, render::Renderer& renderer,
+               const std::string& path) {
+  DynamicAabbTreeOptions with;
+  with.margin = settings.margin;
+  DynamicAabbTreeOptions without = with;
+  without.rotations = false;
+  const Curves on = insertionCurves(boxes, with), off = insertionCurves(boxes, without);
+  const dd::Color onColor{1.0f, 0.6f, 0.1f, 1}, offColor{0.4f, 0.6f, 1.0f, 1};
+  const int width = settings.width, height = settings.height;
+  dd::Frame sarFrame, heightFrame;
+  drawLinePlot("surface area ratio (lower is better)", "insertions",
+               {{"rotations", onColor, on.sar}, {"no rotations", offColor, off.sar}}, {0, 0, double(width), double(height)},
+               sarFrame);
+  drawLinePlot("tree height", "insertions",
+               {{"rotations", onColor, on.height}, {"no rotations", offColor, off.height}},
+               {0, 0, double(width), double(height)}, heightFrame);
+  const render::Camera camera = pixelCamera(width, height);
+  render::writePng(path, sideBySide(renderer.render(sarFrame, camera), renderer.render(heightFrame, camera)));
+  std::printf("final SAR %.3f with rotations, %.3f without; height %g with, %g without\n",
+              on.sar.empty() ? 0.0 : on.sar.back(), off.sar.empty() ? 0.0 : off.sar.back(),
+              on.height.empty() ? 0.0 : on.height.back(), off.height.empty() ? 0.0 : off.height.back());
+}
+
+// Runs `change` with the log cleared; keeps an event when it rotated.
+template <typename Change>
+void observe(DynamicAabbTree& tree, const std::string& what, Change&& change, std::vector<TreeEvent>& events) {
+  tree.clearRotationLog();
+  const int leaf = change();
+  if (tree.rotationLog().empty()) return;
+  TreeEvent event;
+  event.what = what;
+  event.leaf = leaf;
+  event.rotations = tree.rotationLog();
+  event.after = snapshotTree(tree);
+  event.before = event.after;
+  undoRotations(event.before, event.rotations);
+  events.push_back(std::move(event));
+}
+
+std::vector<TreeEvent> collectEvents(const SceneDescription& scene, const TreeViewSettings& settings,
+                                     std::vector<Aabb>& initialBoxes) {
+  World world = buildWorld(scene);
+  DynamicAabbTreeOptions options;
+  options.margin = settings.margin;
+  DynamicAabbTree tree(options);
+  tree.setRotationLogEnabled(true);
+  std::vector<TreeEvent> events;
+  initialBoxes = bodyBoxes(world);
+  std::vector<int> proxies;
+  for (std::size_t i = 0; i < initialBoxes.size(); ++i) {
+    const std::string what = "insertion " + std::to_string(i + 1) + " (body " + std::to_string(i) + ")";
+    observe(tree, what, [&] {
+      proxies.push_back(tree.createProxy(initialBoxes[i], static_cast<std::uint32_t>(i)));
+      return proxies.back();
+    }, events);
+  }
+  for (int step = 1; step <= settings.steps; ++step) {
+    world.step();
+    const std::vector<Aabb> boxes = bodyBoxes(world);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const std::string what = "step " + std::to_string(step) + " reinsertion (body " + std::to_string(i) + ")";
+      observe(tree, what, [&] {
+        tree.moveProxy(proxies[i], boxes[i]);
+        return proxies[i];
+      }, events);
+    }
+  }
+  return events;
+}
+
+TreeViewSettings readSettings(const Arguments& arguments, const SceneDescription& scene) {
+  TreeViewSettings settings;
+  settings.outputDirectory = arguments.value("--output", "out/tree_" + scene.name);
+  std::tie(settings.width, settings.height) = parseSize(arguments.value("--size", "640x480"), "--size");
+  if (settings.width < 400 || settings.height < 300) throw UsageError("--size: each panel needs at least 400x300");
+  settings.maxEvents = arguments.positiveInt("--max-events", 12);
+  if (arguments.has("--steps")) settings.steps = arguments.positiveInt("--steps", 0);
+  settings.margin = arguments.has("--margin") ? arguments.positiveDouble("--margin", 0.1) : 0.1;
+  return settings;
+}
+
+}  // namespace
+
+int runTree(const std::vector<std::string>& args) {
+  const CommandSpec spec{
+      "tree",
+      "SCENE [-o DIR] [--size WxH] [--max-events N] [--steps K] [--margin M] [--backend osmesa|egl]",
+      "Inserts SCENE's bodies one by one into a dynamic AABB tree and writes, for each insertion (and with\n"
+      "--steps, each reinsertion) whose refit walk rotates, DIR/event_NNN_before.png and event_NNN_after.png:\n"
+      "the 3D boxes beside the hierarchy diagram, with the swapped subtrees highlighted. 'Before' is the tree\n"
+      "with the leaf inserted and refitted but not rotated. DIR/sar_height.png plots SAR and height against\n"
+      "insertion count with and without rotations.",
+      {{"--output", "-o", "DIR", "output folder (default out/tree_SCENE)"},
+       {"--size", "", "WxH", "size of each of the two panels (default 640x480)"},
+       {"--max-events", "", "N", "write at most N frame pairs (default 12)"},
+       {"--steps", "", "K", "then simulate K steps and show reinsertions that rotate"},
+       {"--margin", "", "M", "fat-box margin of the tree (default 0.1)"},
+       backendOptionSpec()},
+      1,
+      1};
+  auto parsed = Arguments::parse(spec, args);
+  if (!parsed) return 0;
+  const SceneDescription scene = resolveScene(parsed->positional()[0]);
+  TreeViewSettings settings = readSettings(*parsed, scene);
+  prepareOutputDirectory(settings.outputDirectory);
+
+  std::vector<Aabb> boxes;
+  const std::vector<TreeEvent> events = collectEvents(scene, settings, boxes);
+  render::Renderer renderer({settings.width, settings.height, 0, readBackend(*parsed)});
+  Panels panels{renderer, settings};
+  const int written = std::min(settings.maxEvents, static_cast<int>(events.size()));
+  for (int i = 0; i < written; ++i) {
+    const TreeEvent& event = events[i];
+    const render::Camera camera = treeCamera(event, double(settings.width) / settings.height);
+    char name[64];
+    for (const bool after : {false, true}) {
+      std::snprintf(name, sizeof name, "event_%03d_%s.png", i, after ? "after" : "before");
+      render::writePng((fs::path(settings.outputDirectory) / name).string(),
+                       renderEventFrame(panels, event, after, camera));
+    }
+    std::printf("event %03d: %s, %zu rotations, SAR %.3f -> %.3f, height %d -> %d\n", i, event.what.c_str(),
+                event.rotations.size(), event.before.surfaceAreaRatio(), event.after.surfaceAreaRatio(),
+                event.before.height(), event.after.height());
+  }
+  writePlot(boxes, settings, renderer, (fs::path(settings.outputDirectory) / "sar_height.png").string());
+  std::printf("%zu rotating events, wrote %d frame pairs and sar_height.png to %s\n", events.size(), written,
+              settings.outputDirectory.c_str());
+  return 0;
+}
+
+}  // namespace physdbg::cli

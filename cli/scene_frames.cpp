@@ -1,0 +1,129 @@
+#include "cli/scene_frames.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <stdexcept>
+
+#include "cli/arguments.h"
+#include "cli/scene_camera.h"
+#include "cli/scene_overlay.h"
+#include "engine/broadphase/dynamic_aabb_tree.h"
+
+namespace physdbg::cli {
+namespace {
+
+namespace dd = debugdraw;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// The tree layer limited to depths [minDepth, maxDepth], coloured like the world's own tree layer.
+void addTreeDepths(const DynamicAabbTree& tree, int minDepth, int maxDepth, dd::Frame& frame) {
+  tree.forEachNode([&](const Aabb& box, int depth, bool isLeaf) {
+    if (isLeaf || depth < minDepth || depth > maxDepth) return;
+    const float lift = std::min(0.6f, 0.08f * static_cast<float>(depth));
+    const dd::Color color{dd::colors::treeNode.r + lift, dd::colors::treeNode.g + lift, 1.0f, 1.0f};
+    frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), color});
+  });
+}
+
+// A view of the body from a few of its sizes away, so it fills about a third of the picture.
+render::Camera followCamera(const RigidBody& body, double aspect) {
+  const Aabb box = body.collider().worldBounds(body.transform());
+  const Vec3 half = box.halfExtents().cwiseMax(Vec3::Constant(0.5)) * 3.0;
+  render::Bounds bounds;
+  bounds.extend(box.center() - half);
+  bounds.extend(box.center() + half);
+  return render::frameBoundsCamera(bounds, aspect);
+}
+
+}  // namespace
+
+render::Camera toCamera(const dd::View& view) {
+  render::Camera camera;
+  camera.eye = view.eye;
+  camera.target = view.target;
+  camera.up = view.up;
+  camera.fovYDegrees = view.fovYDegrees;
+  camera.orthographic = view.orthographic;
+  camera.orthoHeight = view.orthoHeight;
+  return camera;
+}
+
+dd::View toView(const render::Camera& camera) {
+  return {camera.eye, camera.target, camera.up, camera.fovYDegrees, camera.orthographic, camera.orthoHeight};
+}
+
+SceneFrames::SceneFrames(const SceneDescription& scene, const ViewOptions& options)
+    : scene_(scene), options_(options), world_(buildWorld(scene)) {}
+
+void SceneFrames::advanceTo(int index) {
+  if (index < current_) throw std::invalid_argument("SceneFrames: frames must be asked for in order");
+  while (current_ < index) {
+    const auto start = Clock::now();
+    for (int step = 0; step < options_.stepsPerFrame; ++step) world_.step();
+    const double seconds = secondsSince(start);
+    simulateSeconds_ += seconds;
+    lastStepMs_ = 1e3 * seconds / options_.stepsPerFrame;
+    ++current_;
+  }
+}
+
+render::Camera SceneFrames::camera() {
+  const double aspect = static_cast<double>(options_.width) / options_.height;
+  if (!initialCamera_) {
+    dd::Frame framing;
+    world_.emitDebugDraw(dd::parseLayers("shapes"), framing);
+    render::Camera camera = options_.follow ? followCamera(world_.body(*options_.follow), aspect)
+                                            : chooseCamera(scene_, framing, aspect);
+    const Vec3 offset = camera.eye - camera.target;
+    if (options_.target) camera.target = *options_.target;
+    camera.eye = options_.eye ? *options_.eye : camera.target + offset;
+    if (options_.fovYDegrees) camera.fovYDegrees = *options_.fovYDegrees;
+    if (options_.orthographic) {
+      camera.orthographic = true;
+      // Same visible height at the target as the perspective view had.
+      camera.orthoHeight = 2.0 * (camera.eye - camera.target).norm() * std::tan(camera.fovYDegrees * std::numbers::pi / 360.0);
+    }
+    if (std::abs((camera.target - camera.eye).normalized().dot(camera.up)) > 0.999) camera.up = Vec3::UnitZ();
+    try {
+      render::validateCamera(camera);
+    } catch (const std::invalid_argument& error) {
+      throw UsageError(std::string("camera: ") + error.what());
+    }
+    initialCamera_ = camera;
+  }
+  render::Camera camera = *initialCamera_;
+  if (options_.follow) {
+    const Vec3 position = world_.body(*options_.follow).position();
+    if (position.allFinite()) {
+      camera.eye += position - camera.target;
+      camera.target = position;
+    }
+  }
+  return camera;
+}
+
+dd::RecordedFrame SceneFrames::frame(int index) {
+  advanceTo(index);
+  const auto start = Clock::now();
+  dd::RecordedFrame out;
+  out.index = index;
+  dd::LayerSet layers = options_.layers;
+  const bool limitTree = layers.has(dd::Layer::Tree) && (options_.treeMinDepth > 0 || options_.treeMaxDepth < (1 << 30));
+  if (limitTree) layers.bits &= ~static_cast<std::uint32_t>(dd::Layer::Tree);
+  world_.emitDebugDraw(layers, out.frame);
+  if (limitTree && world_.tree()) addTreeDepths(*world_.tree(), options_.treeMinDepth, options_.treeMaxDepth, out.frame);
+  if (layers.has(dd::Layer::Overlay))
+    addOverlay(scene_, world_,
+               {index, options_.frames.last - 1, options_.timing ? std::optional<double>(lastStepMs_) : std::nullopt},
+               out.frame);
+  out.view = toView(camera());
+  drawSeconds_ += secondsSince(start);
+  return out;
+}
+
+}  // namespace physdbg::cli

@@ -1,0 +1,51 @@
+#pragma once
+// Options shared by `render` and `record`: which frames, which layers, and
+// where the camera looks from. Parsed once, validated before any work.
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "cli/arguments.h"
+#include "debugdraw/primitives.h"
+#include "render/renderer.h"
+#include "scenes/scene.h"
+
+namespace physdbg::cli {
+
+struct FrameRange {
+  int first = 0, last = 0;  // frames first .. last-1
+  int count() const { return last - first; }
+};
+
+struct ViewOptions {
+  FrameRange frames;
+  int stepsPerFrame = 1;
+  int width = 1280, height = 720;
+  debugdraw::LayerSet layers;
+  int treeMinDepth = 0, treeMaxDepth = 1 << 30;
+  std::optional<int> follow;  // body index
+  std::optional<Vec3> eye, target;
+  std::optional<double> fovYDegrees;
+  bool orthographic = false;
+  bool timing = true;  // measured step time in the overlay (off: byte-identical frames run after run)
+};
+
+// The option rows for a CommandSpec.
+std::vector<OptionSpec> viewOptionSpecs();
+
+// "N" (frames 0..N-1) or "A:B" (frames A..B-1). Throws UsageError naming `option`.
+FrameRange parseFrameRange(const std::string& text, const std::string& option);
+// "A:B" depth range, inclusive; "A:" means no upper limit.
+std::pair<int, int> parseDepthRange(const std::string& text, const std::string& option);
+// "x,y,z". Throws UsageError naming `option`.
+Vec3 parseVector(const std::string& text, const std::string& option);
+
+// --backend osmesa|egl, for the commands that render.
+OptionSpec backendOptionSpec();
+// The --backend choice (default osmesa); throws UsageError naming the choices.
+render::Backend readBackend(const Arguments& arguments);
+
+// Throws UsageError for bad values, including a --follow body the scene lacks.
+ViewOptions readViewOptions(const Arguments& arguments, const SceneDescription& scene);
+
+}  // namespace physdbg::cli

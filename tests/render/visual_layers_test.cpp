@@ -1,0 +1,102 @@
+// Each debug layer's colour appears in the picture, inside the projected
+// bounds of what the layer draws, and does not appear when the layer is off.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/renderer.h"
+#include "render_test_support.h"
+#include "scenes/scene.h"
+
+namespace {
+
+namespace dd = physdbg::debugdraw;
+using physdbg::render::testing::pixelAt;
+using physdbg::render::testing::projectToPixel;
+
+constexpr int width = 240, height = 160;
+
+struct Match {
+  int count = 0;
+  int minX = width, minY = height, maxX = -1, maxY = -1;
+};
+
+// Pixels within `tolerance` levels of `color` on every channel.
+Match findColor(const physdbg::render::Image& image, dd::Color color, int tolerance = 30) {
+  Match match;
+  const int target[3] = {int(std::lround(color.r * 255)), int(std::lround(color.g * 255)), int(std::lround(color.b * 255))};
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const auto pixel = pixelAt(image, x, y);
+      bool close = true;
+      for (int c = 0; c < 3; ++c) close = close && std::abs(pixel[c] - target[c]) <= tolerance;
+      if (!close) continue;
+      ++match.count;
+      match.minX = std::min(match.minX, x), match.maxX = std::max(match.maxX, x);
+      match.minY = std::min(match.minY, y), match.maxY = std::max(match.maxY, y);
+    }
+  return match;
+}
+
+struct LayerCase {
+  const char* scene;
+  int steps;
+  const char* layer;
+  dd::Color color;
+};
+
+void PrintTo(const LayerCase& c, std::ostream* out) { *out << c.layer << " in " << c.scene; }
+
+class LayerColors : public ::testing::TestWithParam<LayerCase> {};
+
+TEST_P(LayerColors, AppearInsideTheLayersBoundsAndOnlyWhenOn) {
+  const LayerCase& c = GetParam();
+  physdbg::World world = physdbg::buildWorld(physdbg::resolveScene(c.scene));
+  for (int i = 0; i < c.steps; ++i) world.step();
+  physdbg::render::Renderer renderer({width, height, 0});
+  dd::Frame all;
+  world.emitDebugDraw(dd::parseLayers("shapes,aabbs,fat,tree,contacts,velocities,pairs"), all);
+  const physdbg::render::Camera camera =
+      physdbg::render::frameBoundsCamera(physdbg::render::frameBounds(all), double(width) / height);
+
+  dd::Frame on;
+  world.emitDebugDraw(dd::parseLayers(c.layer), on);
+  ASSERT_FALSE(on.empty()) << c.layer;
+  const Match match = findColor(renderer.render(on, camera), c.color);
+  EXPECT_GE(match.count, 10) << c.layer;
+  // Every matching pixel lies inside the projection of the layer's own bounds.
+  const physdbg::render::Bounds bounds = physdbg::render::frameBounds(on);
+  double minX = 1e9, minY = 1e9, maxX = -1e9, maxY = -1e9;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3d point((corner & 1) ? bounds.max.x() : bounds.min.x(), (corner & 2) ? bounds.max.y() : bounds.min.y(),
+                                (corner & 4) ? bounds.max.z() : bounds.min.z());
+    const Eigen::Vector2d pixel = projectToPixel(camera, width, height, point);
+    minX = std::min(minX, pixel.x()), maxX = std::max(maxX, pixel.x());
+    minY = std::min(minY, pixel.y()), maxY = std::max(maxY, pixel.y());
+  }
+  const double slack = 6;  // point sprites and arrow heads reach a few pixels past their position
+  EXPECT_GE(match.minX, minX - slack) << c.layer;
+  EXPECT_LE(match.maxX, maxX + slack) << c.layer;
+  EXPECT_GE(match.minY, minY - slack) << c.layer;
+  EXPECT_LE(match.maxY, maxY + slack) << c.layer;
+
+  // All other non-shape layers on, this one off: the colour is gone.
+  dd::LayerSet others = dd::parseLayers("aabbs,fat,tree,contacts,velocities,pairs");
+  others.bits &= ~dd::parseLayers(c.layer).bits;
+  dd::Frame off;
+  world.emitDebugDraw(others, off);
+  EXPECT_LE(findColor(renderer.render(off, camera), c.color).count, 2) << c.layer;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Layers, LayerColors,
+    ::testing::Values(LayerCase{"stack", 5, "aabbs", dd::colors::colliding},
+                      LayerCase{"stack", 5, "fat", dd::colors::fatBox},
+                      LayerCase{"stack", 5, "tree", dd::colors::treeNode},
+                      LayerCase{"stack", 5, "contacts", dd::colors::contactPoint},
+                      LayerCase{"bounce", 20, "velocities", {0.3f, 0.9f, 1.0f, 1}},
+                      LayerCase{"stack", 5, "pairs", {0.9f, 0.5f, 0.9f, 1}}),
+    [](const ::testing::TestParamInfo<LayerCase>& info) { return std::string(info.param.layer); });
+
+}  // namespace
