@@ -17,5 +17,6 @@ int runSimulate(const std::vector<std::string>& args);
 int runRender(const std::vector<std::string>& args);
 int runContacts(const std::vector<std::string>& args);
 int runBench(const std::vector<std::string>& args);
+int runReport(const std::vector<std::string>& args);
 
 }  // namespace physdbg::cli

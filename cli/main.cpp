@@ -21,6 +21,7 @@ const std::vector<Subcommand>& subcommands() {
       {"contacts", "every contact of a scene's initial state: normal, depth, points (JSON)",
        physdbg::cli::runContacts},
       {"bench", "run benchmarks side by side with peer engines, print JSON", physdbg::cli::runBench},
+      {"report", "stability, accuracy and stage reports: PASS/FAIL tables, CSV, plots", physdbg::cli::runReport},
   };
   return commands;
 }
