@@ -5,6 +5,8 @@
 namespace physdbg::bench {
 
 Benchmark narrowBenchmark();
+Benchmark dropBenchmark();
+Benchmark pyramidBenchmark();
 
 // Each benchmark lives in its own file and is listed here, in output order.
 std::vector<Benchmark> allBenchmarks() {
@@ -13,6 +15,8 @@ std::vector<Benchmark> allBenchmarks() {
   benchmarks.push_back(narrowBenchmark());
   benchmarks.push_back({"seed", "step time of the design's scenes: tree against brute force, 24 against 48 balls",
                         runSeedBenchmark});
+  benchmarks.push_back(dropBenchmark());
+  benchmarks.push_back(pyramidBenchmark());
   return benchmarks;
 }
 
