@@ -67,7 +67,7 @@ bool writePlot(const std::filesystem::path& directory, const std::string& refere
   writeFile(directory / (reference + ".dat"), data);
   writeFile(directory / (reference + ".gp"),
             "set terminal pngcairo noenhanced size 900,600\nset output '" + reference +
-                ".png'\nset logscale xy\nset xlabel 'run time (ms)'\nset ylabel 'error'\nset title '" + reference +
+                ".png'\nset logscale xy\nset format y '%g'\nset xlabel 'run time (ms)'\nset ylabel 'error'\nset title '" + reference +
                 ": work-precision'\nset key bottom left\nset grid\n" + plot + "\n");
   const std::string command = "cd '" + directory.string() + "' && gnuplot '" + reference + ".gp' 2>/dev/null";
   return std::system(command.c_str()) == 0;
