@@ -8,6 +8,8 @@ Benchmark narrowBenchmark();
 #ifdef PHYSDBG_HAVE_RENDER
 Benchmark renderBenchmark();
 #endif
+Benchmark dropBenchmark();
+Benchmark pyramidBenchmark();
 
 // Each benchmark lives in its own file and is listed here, in output order.
 std::vector<Benchmark> allBenchmarks() {
@@ -19,6 +21,8 @@ std::vector<Benchmark> allBenchmarks() {
 #ifdef PHYSDBG_HAVE_RENDER
   benchmarks.push_back(renderBenchmark());
 #endif
+  benchmarks.push_back(dropBenchmark());
+  benchmarks.push_back(pyramidBenchmark());
   return benchmarks;
 }
 

@@ -21,5 +21,6 @@ int runCompare(const std::vector<std::string>& args);
 int runTree(const std::vector<std::string>& args);
 int runRecord(const std::vector<std::string>& args);
 int runReplay(const std::vector<std::string>& args);
+int runReport(const std::vector<std::string>& args);
 
 }  // namespace physdbg::cli

@@ -27,6 +27,7 @@ const std::vector<Subcommand>& subcommands() {
       {"bench", "run benchmarks side by side with peer engines, print JSON", physdbg::cli::runBench},
       {"compare", "compare two PNGs like the golden tests; prints figures, writes a diff image",
        physdbg::cli::runCompare},
+      {"report", "stability, accuracy and stage reports: PASS/FAIL tables, CSV, plots", physdbg::cli::runReport},
   };
   return commands;
 }

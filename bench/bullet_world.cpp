@@ -1,0 +1,134 @@
+#include "bench/bullet_world.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "engine/colliders/box_collider.h"
+#include "engine/colliders/sphere_collider.h"
+
+#ifdef PHYSDBG_HAVE_BULLET
+#include <btBulletDynamicsCommon.h>
+#endif
+
+namespace physdbg::bench {
+
+#ifdef PHYSDBG_HAVE_BULLET
+namespace {
+
+btVector3 toBullet(const Vec3& v) { return btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z())); }
+
+std::unique_ptr<btCollisionShape> makeShape(const Collider& collider) {
+  if (const auto* sphere = dynamic_cast<const SphereCollider*>(&collider)) {
+    return std::make_unique<btSphereShape>(btScalar(sphere->radius()));
+  }
+  if (const auto* box = dynamic_cast<const BoxCollider*>(&collider)) {
+    return std::make_unique<btBoxShape>(toBullet(box->halfExtents()));
+  }
+  throw std::invalid_argument(std::string("BulletWorld: unsupported collider kind ") +
+                              colliderKindName(collider.kind()) + " (spheres and boxes only)");
+}
+
+}  // namespace
+
+// Members are destroyed in reverse order: bodies leave the world first.
+struct BulletWorld::Impl {
+  btDefaultCollisionConfiguration configuration;
+  btCollisionDispatcher dispatcher{&configuration};
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+  btScalar dt = 1.0f / 60.0f;
+  std::vector<std::unique_ptr<btCollisionShape>> shapes;
+  std::vector<std::unique_ptr<btDefaultMotionState>> motionStates;
+  std::vector<std::unique_ptr<btRigidBody>> bodies;
+
+  ~Impl() {
+    for (auto& body : bodies) world.removeRigidBody(body.get());
+  }
+
+  // One Bullet shape per distinct physdbg collider, as the scene shares them.
+  btCollisionShape* shapeFor(const Collider& collider, std::vector<const Collider*>& sources) {
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+      if (sources[i] == &collider) return shapes[i].get();
+    }
+    shapes.push_back(makeShape(collider));
+    sources.push_back(&collider);
+    return shapes.back().get();
+  }
+
+  void addBody(const BodyDefinition& definition, btCollisionShape* shape, bool allowSleep) {
+    const btScalar mass = definition.isStatic ? btScalar(0) : btScalar(definition.mass);
+    btVector3 inertia(0, 0, 0);
+    if (mass > 0) shape->calculateLocalInertia(mass, inertia);
+    const Quat& q = definition.orientation;
+    const btTransform start(btQuaternion(btScalar(q.x()), btScalar(q.y()), btScalar(q.z()), btScalar(q.w())),
+                            toBullet(definition.position));
+    motionStates.push_back(std::make_unique<btDefaultMotionState>(start));
+    btRigidBody::btRigidBodyConstructionInfo info(mass, motionStates.back().get(), shape, inertia);
+    info.m_friction = btScalar(std::sqrt(definition.material.dynamicFriction));
+    info.m_restitution = btScalar(std::sqrt(definition.material.restitution));
+    bodies.push_back(std::make_unique<btRigidBody>(info));
+    btRigidBody& body = *bodies.back();
+    body.setLinearVelocity(toBullet(definition.linearVelocity));
+    body.setAngularVelocity(toBullet(definition.angularVelocity));
+    if (!definition.isStatic && !allowSleep) body.setActivationState(DISABLE_DEACTIVATION);
+    world.addRigidBody(&body);
+  }
+};
+
+bool BulletWorld::available() { return true; }
+
+BulletWorld::BulletWorld(const SceneDescription& scene, bool allowSleep) : impl_(std::make_unique<Impl>()) {
+  impl_->world.setGravity(toBullet(scene.world.gravity));
+  impl_->dt = btScalar(scene.world.dt);
+  std::vector<const Collider*> sources;
+  for (const BodyDefinition& definition : scene.bodies) {
+    if (!definition.collider) throw std::invalid_argument("BulletWorld: body without a collider");
+    impl_->addBody(definition, impl_->shapeFor(*definition.collider, sources), allowSleep);
+  }
+}
+
+BulletWorld::~BulletWorld() = default;
+
+void BulletWorld::step() { impl_->world.stepSimulation(impl_->dt, 1, impl_->dt); }
+
+std::size_t BulletWorld::bodyCount() const { return impl_->bodies.size(); }
+
+Vec3 BulletWorld::position(std::size_t body) const {
+  const btVector3& p = impl_->bodies.at(body)->getCenterOfMassPosition();
+  return Vec3(p.x(), p.y(), p.z());
+}
+
+double BulletWorld::kineticEnergy() const {
+  double energy = 0.0;
+  for (const auto& body : impl_->bodies) {
+    if (body->getInvMass() == 0) continue;
+    const btVector3 v = body->getLinearVelocity();
+    const btVector3 w = body->getWorldTransform().getBasis().transpose() * body->getAngularVelocity();
+    const btVector3 inverseInertia = body->getInvInertiaDiagLocal();
+    energy += 0.5 * double(v.length2()) / double(body->getInvMass());
+    for (int axis = 0; axis < 3; ++axis) {
+      if (inverseInertia[axis] > 0) energy += 0.5 * double(w[axis]) * double(w[axis]) / double(inverseInertia[axis]);
+    }
+  }
+  return energy;
+}
+
+#else
+
+struct BulletWorld::Impl {};
+
+bool BulletWorld::available() { return false; }
+BulletWorld::BulletWorld(const SceneDescription&, bool) {
+  throw std::runtime_error("BulletWorld: physdbg was built without Bullet");
+}
+BulletWorld::~BulletWorld() = default;
+void BulletWorld::step() {}
+std::size_t BulletWorld::bodyCount() const { return 0; }
+Vec3 BulletWorld::position(std::size_t) const { return Vec3::Zero(); }
+double BulletWorld::kineticEnergy() const { return 0.0; }
+
+#endif
+
+}  // namespace physdbg::bench

@@ -1,0 +1,40 @@
+#pragma once
+// The same scene in Bullet, for side-by-side benchmarks: spheres and boxes
+// only, btDbvtBroadphase, btSequentialImpulseConstraintSolver with its
+// default 10 iterations, one fixed substep per step.
+//
+// Bullet multiplies the friction and restitution of a pair where physdbg
+// takes the geometric mean of friction and the larger restitution. When every
+// body shares one material (the benchmark scenes), giving each Bullet body
+// the square root of the value makes every pair combine to the same number.
+#include <cstddef>
+#include <memory>
+
+#include "engine/math.h"
+#include "scenes/scene.h"
+
+namespace physdbg::bench {
+
+class BulletWorld {
+ public:
+  // False when the project was built without Bullet.
+  static bool available();
+
+  // Throws std::invalid_argument for a collider other than a sphere or box,
+  // std::runtime_error when Bullet is not available.
+  BulletWorld(const SceneDescription& scene, bool allowSleep);
+  ~BulletWorld();
+  BulletWorld(const BulletWorld&) = delete;
+  BulletWorld& operator=(const BulletWorld&) = delete;
+
+  void step();
+  std::size_t bodyCount() const;
+  Vec3 position(std::size_t body) const;  // in scene order
+  double kineticEnergy() const;           // of the dynamic bodies, J
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace physdbg::bench

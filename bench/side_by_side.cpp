@@ -1,0 +1,53 @@
+#include "bench/side_by_side.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "bench/bullet_world.h"
+
+namespace physdbg::bench {
+namespace {
+
+template <typename Step>
+double millisecondsPerStep(int steps, Step&& step) {
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < steps; ++i) step();
+  return 1000.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / steps;
+}
+
+}  // namespace
+
+EngineRun runOurs(const SceneDescription& scene, int steps) {
+  World world = buildWorld(scene);
+  EngineRun run;
+  for (const RigidBody& body : world.bodies()) run.startPositions.push_back(body.position());
+  run.msPerStep = millisecondsPerStep(steps, [&] { world.step(); });
+  for (const RigidBody& body : world.bodies()) {
+    run.finalPositions.push_back(body.position());
+    if (!body.isStatic()) run.kineticEnergy += body.kineticEnergy();
+  }
+  run.ran = true;
+  return run;
+}
+
+EngineRun runBullet(const SceneDescription& scene, int steps, bool allowSleep) {
+  EngineRun run;
+  if (!BulletWorld::available()) return run;
+  BulletWorld world(scene, allowSleep);
+  for (std::size_t i = 0; i < world.bodyCount(); ++i) run.startPositions.push_back(world.position(i));
+  run.msPerStep = millisecondsPerStep(steps, [&] { world.step(); });
+  for (std::size_t i = 0; i < world.bodyCount(); ++i) run.finalPositions.push_back(world.position(i));
+  run.kineticEnergy = world.kineticEnergy();
+  run.ran = true;
+  return run;
+}
+
+double largestDisplacement(const EngineRun& run) {
+  double largest = 0.0;
+  for (std::size_t i = 0; i < run.finalPositions.size(); ++i) {
+    largest = std::max(largest, (run.finalPositions[i] - run.startPositions[i]).norm());
+  }
+  return largest;
+}
+
+}  // namespace physdbg::bench

@@ -1,0 +1,110 @@
+// physdbg report stability|accuracy|stages [-o DIR]: the reports of issue 9.
+// Tables go to stdout; with -o the same tables (Markdown, CSV) and plots are
+// written to DIR.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "cli/arguments.h"
+#include "cli/commands.h"
+#include "reports/accuracy_report.h"
+#include "reports/stability_report.h"
+#include "reports/stage_report.h"
+#include "scenes/scene.h"
+
+namespace physdbg::cli {
+namespace {
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream file(path);
+  file << text;
+  if (!file) throw std::runtime_error("cannot write '" + path.string() + "'");
+}
+
+std::filesystem::path outputDirectory(const Arguments& parsed) {
+  const std::filesystem::path directory = parsed.value("--output");
+  if (!directory.empty()) std::filesystem::create_directories(directory);
+  return directory;
+}
+
+// Exit code 1 when any case fails, so scripts can gate on it.
+int reportStability(const Arguments& parsed) {
+  const auto length = parsed.has("--quick") ? reports::RunLength::Test : reports::RunLength::Report;
+  const auto rows = reports::runStabilitySuite(length, parsed.value("--case"), [](const reports::StabilityRow& row) {
+    std::printf("%-22s %-4s %12.4g %-8s %6.2fs  %s\n", row.name.c_str(), row.outcome.pass ? "PASS" : "FAIL",
+                row.outcome.figure, row.unit.c_str(), row.seconds, row.outcome.detail.c_str());
+    std::fflush(stdout);
+  });
+  if (rows.empty()) throw UsageError("--case: no stability case matches '" + parsed.value("--case") + "'");
+  const std::string markdown = reports::stabilityMarkdown(rows);
+  std::cout << "\n" << markdown;
+  const auto directory = outputDirectory(parsed);
+  if (!directory.empty()) {
+    writeText(directory / "stability.md", markdown);
+    writeText(directory / "stability.csv", reports::stabilityCsv(rows));
+  }
+  for (const auto& row : rows) {
+    if (!row.outcome.pass) return 1;
+  }
+  return 0;
+}
+
+int reportAccuracy(const Arguments& parsed) {
+  reports::AccuracyOptions options;
+  options.quick = parsed.has("--quick");
+  options.outputDirectory = outputDirectory(parsed);
+  std::cout << reports::runAccuracyReport(options, [](const std::string& line) {
+    std::cout << line << std::endl;
+  });
+  return 0;
+}
+
+// Spheres only against boxes, no layers against every layer: the counters
+// show which stages and layers did work.
+int reportStages(const Arguments& parsed) {
+  const int steps = parsed.has("--quick") ? 10 : 120;
+  std::string table =
+      "| scene | steps | candidate pairs | narrow pairs | closed form | GJK | EPA | manifolds | locked bodies | layers "
+      "| primitives |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const char* name : {"balls48", "stack", "pyramid"}) {
+    for (const char* layers : {"", "shapes,contacts,aabbs"}) {
+      const auto c = reports::countStages(resolveScene(name), steps, layers);
+      char row[400];
+      std::snprintf(row, sizeof row, "| %s | %d | %lld | %lld | %lld | %lld | %lld | %lld | %d | %s | %lld |\n",
+                    c.scene.c_str(), c.steps, c.candidatePairs, c.narrowPairs, c.fastPath, c.gjk, c.epa, c.manifolds,
+                    c.bodiesWithLocks, c.layersRequested.empty() ? "none" : c.layersRequested.c_str(),
+                    c.primitivesEmitted);
+      table += row;
+    }
+  }
+  std::cout << table;
+  const auto directory = outputDirectory(parsed);
+  if (!directory.empty()) writeText(directory / "stages.md", table);
+  return 0;
+}
+
+}  // namespace
+
+int runReport(const std::vector<std::string>& args) {
+  const CommandSpec spec{"report",
+                         "stability|accuracy|stages [-o DIR] [--quick] [--case NAME]",
+                         "stability: stiff and extreme scenes, PASS/FAIL with the measured figure (exit 1 if any "
+                         "fails).\naccuracy: analytic references swept over dt and solver settings: CSV, "
+                         "work-precision plot, convergence orders, Markdown summary.\nstages: which pipeline stages "
+                         "and debug layers each scene used, from the engine's counters.",
+                         {{"--output", "-o", "DIR", "also write the tables (and plots) to DIR"},
+                          {"--quick", "", "", "short runs (the CTest versions of the stability cases)"},
+                          {"--case", "", "NAME", "stability: only the cases whose name contains NAME"}},
+                         1,
+                         1};
+  const auto parsed = Arguments::parse(spec, args);
+  if (!parsed) return 0;
+  const std::string kind = parsed->positional()[0];
+  if (kind == "stability") return reportStability(*parsed);
+  if (kind == "accuracy") return reportAccuracy(*parsed);
+  if (kind == "stages") return reportStages(*parsed);
+  throw UsageError("unknown report '" + kind + "' (stability, accuracy or stages)");
+}
+
+}  // namespace physdbg::cli

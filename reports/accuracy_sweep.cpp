@@ -1,0 +1,102 @@
+// The sweep: each time-step reference once per (method, dt); each depth
+// reference once per (method, tolerance), timed.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "reports/accuracy_references.h"
+#include "reports/accuracy_report.h"
+
+namespace physdbg::reports {
+namespace {
+
+struct SolverMethod {
+  std::string name;
+  SolverSettings solver;
+};
+
+std::vector<SolverMethod> solverMethods() {
+  SolverSettings seed;
+  seed.kind = SolverKind::Seed;
+  SolverSettings single;
+  single.substeps = 1;
+  SolverSettings standard;  // 4 substeps, 1 iteration
+  SolverSettings iterated;
+  iterated.velocityIterations = 4;
+  return {{"seed", seed}, {"si 1 substep", single}, {"si 4 substeps", standard}, {"si 4 substeps x4 iter", iterated}};
+}
+
+template <typename Run>
+double timedMilliseconds(Run&& run) {
+  const auto start = std::chrono::steady_clock::now();
+  run();
+  return 1000.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+std::vector<AccuracySample> runAccuracySweep(bool quick, const std::function<void(const std::string&)>& progress) {
+  const std::vector<int> rates = quick ? std::vector<int>{30, 60, 120, 240}
+                                       : std::vector<int>{30, 60, 120, 240, 480, 960, 1920, 3840};
+  // Runs are deterministic: repeats change only the time, and the fastest
+  // is the least disturbed by other work on the machine.
+  const int timingRepeats = quick ? 1 : 3;
+  std::vector<AccuracySample> samples;
+  for (const TimeStepReference& reference : timeStepReferences()) {
+    if (progress) progress("accuracy: " + reference.name);
+    for (const SolverMethod& method : solverMethods()) {
+      for (const int rate : rates) {
+        WorldSettings settings;
+        settings.dt = 1.0 / rate;
+        settings.solver = method.solver;
+        AccuracySample sample{reference.name, method.name, settings.dt, 0.0, 1e300, ""};
+        for (int repeat = 0; repeat < timingRepeats; ++repeat) {
+          sample.milliseconds = std::min(sample.milliseconds, timedMilliseconds([&] {
+            const ReferenceResult result = reference.run(settings);
+            sample.error = result.error;
+            sample.note = result.note;
+          }));
+        }
+        samples.push_back(sample);
+      }
+    }
+  }
+  const std::vector<double> tolerances =
+      quick ? std::vector<double>{1e-2, 1e-6, 1e-12} : std::vector<double>{1e-2, 1e-3, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12};
+  const int repeats = quick ? 10 : 2000;  // queries take microseconds
+  for (const DepthReference& reference : depthReferences()) {
+    if (progress) progress("accuracy: " + reference.name);
+    for (const bool closedForm : {true, false}) {
+      for (const double tolerance : tolerances) {
+        NarrowPhaseOptions options;
+        options.analyticFastPaths = closedForm;
+        options.relativeTolerance = tolerance;
+        AccuracySample sample{reference.name, closedForm ? "closed form if any" : "gjk/epa", tolerance, 0.0, 0.0, ""};
+        sample.milliseconds = timedMilliseconds([&] {
+                                for (int i = 0; i < repeats; ++i) sample.error = reference.run(options).error;
+                              }) / repeats;
+        samples.push_back(sample);
+      }
+    }
+  }
+  return samples;
+}
+
+double fittedOrder(const std::vector<AccuracySample>& samples) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (const AccuracySample& sample : samples) {
+    if (!(sample.error > 1e-10) || !(sample.parameter > 0.0)) continue;
+    const double x = std::log(sample.parameter), y = std::log(sample.error);
+    n += 1;
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  const double denominator = n * sxx - sx * sx;
+  if (n < 2 || denominator <= 0.0) return std::nan("");
+  return (n * sxy - sx * sy) / denominator;
+}
+
+}  // namespace physdbg::reports
