@@ -63,7 +63,9 @@ void World::step() {
   freezeNonFiniteBodies();
   updateBroadPhase();  // fat boxes follow the bodies that moved
   findContacts();      // candidate pairs, then the narrow phase on each
-  wakeTouchedBodies();
+  // A body woken by a touch had no pairs with what else it rests on (asleep,
+  // its proxy made none): find them before solving, or it would fall a step.
+  while (wakeTouchedBodies()) findContacts();
   if (seed) {
     resolveContacts();  // every response after every test is done
     integratePositions();
@@ -199,11 +201,19 @@ void World::testStaticPairs() {
 
 // A sleeping body touched by an awake one wakes before the response, so the
 // response sees it as the dynamic body it is.
-void World::wakeTouchedBodies() {
+bool World::wakeTouchedBodies() {
+  bool woke = false;
   for (const Contact& contact : contacts_) {
-    if (asleep_[contact.a] && isMoving(contact.b)) wake(contact.a);
-    if (asleep_[contact.b] && isMoving(contact.a)) wake(contact.b);
+    if (asleep_[contact.a] && isMoving(contact.b)) {
+      wake(contact.a);
+      woke = true;
+    }
+    if (asleep_[contact.b] && isMoving(contact.a)) {
+      wake(contact.b);
+      woke = true;
+    }
   }
+  return woke;
 }
 
 void World::resolveContacts() {

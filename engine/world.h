@@ -118,7 +118,7 @@ class World {
   void testStaticPairs();
   void addManifold(const BodyPair& pair, const ContactResult& result, double speculativeDistance);
   double speculativeDistance(const BodyPair& pair) const;
-  void wakeTouchedBodies();
+  bool wakeTouchedBodies();  // true when a body woke
   void resolveContacts();
   void solveContacts();
   void warmStartFromPreviousStep();

@@ -56,7 +56,7 @@ class SequentialImpulseSolver {
   void loadPoses(const std::vector<RigidBody>& bodies);
   void warmStart(const std::vector<ContactManifold>& manifolds);
   void solve(std::vector<ContactManifold>& manifolds, double substep, const Softness& softness, bool useBias,
-             const SolverSettings& settings);
+             bool reversed, const SolverSettings& settings);
   void applyRestitution(std::vector<ContactManifold>& manifolds);
   double largestPenetration(const std::vector<ContactManifold>& manifolds) const;
   double separation(const ContactManifold& manifold, const ManifoldPoint& point) const;

@@ -13,8 +13,8 @@ struct SolverSettings {
   // contacts `velocityIterations` times with soft position feedback,
   // integrates positions, then relaxes once without feedback. Substeps
   // converge much better than iterations for stacks (Catto, "Solver2D").
-  int substeps = 4;
-  int velocityIterations = 1;
+  int substeps = 8;
+  int velocityIterations = 2;
   bool warmStarting = true;
   // Penetration left in place so resting contacts stay in contact; also the
   // gap within which bodies count as touching for events.
@@ -22,8 +22,8 @@ struct SolverSettings {
   // Soft contact: overlap is pushed out like a spring of this frequency and
   // damping ratio (heavily over-damped), at most maxPushSpeed. Position error
   // never becomes bounce: a 25% overlap is undone in a few steps, calmly.
-  double contactHertz = 30.0;
-  double dampingRatio = 10.0;
+  double contactHertz = 60.0;
+  double dampingRatio = 5.0;
   double maxPushSpeed = 3.0;  // m/s
   // Approach speeds below this (m/s) do not bounce.
   double restitutionThreshold = 0.2;

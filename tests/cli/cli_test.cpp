@@ -108,14 +108,14 @@ TEST(Cli, TraceHasTheDocumentedHeaderAndOneRowPerBodyPerStep) {
   for (std::string line; std::getline(file, line);) rows.push_back(line);
   ASSERT_EQ(rows.size(), 2u * 6u);
   EXPECT_EQ(rows[0].rfind("0,0,0,0,10,0,1,0,0,0,", 0), 0u) << rows[0];
-  // Step 1 of semi-implicit Euler in 4 substeps of h = dt / 4:
-  // v = 4 g h = g dt, y = 10 + g h^2 (1 + 2 + 3 + 4).
+  // Step 1 of semi-implicit Euler in 8 substeps of h = dt / 8 (the default):
+  // v = 8 g h = g dt, y = 10 + g h^2 (1 + 2 + ... + 8).
   std::istringstream row(rows[2]);
   std::vector<double> values;
   for (std::string cell; std::getline(row, cell, ',');) values.push_back(std::stod(cell));
   EXPECT_EQ(values[0], 1);
-  const double h = 1.0 / 240.0;
-  EXPECT_NEAR(values[4], 10 - 9.81 * h * h * 10, 1e-12);
+  const double h = 1.0 / 480.0;
+  EXPECT_NEAR(values[4], 10 - 9.81 * h * h * 36, 1e-12);
   EXPECT_NEAR(values[11], -9.81 / 60.0, 1e-12);
 }
 

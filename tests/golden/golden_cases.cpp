@@ -30,7 +30,8 @@ const std::vector<GoldenCase>& goldenCases() {
       // Solid and wire shapes of every common collider, and the overlay text.
       {"default_shapes_wire_overlay", builtin("default"), 45, "shapes,wire,overlay"},
       // Resting contacts: red AABBs of touching bodies, contact points and normals.
-      {"stack_aabbs_contacts", closeUp(stackScene, 4, Vec3(0, 2, 0), 9.0), 30, "shapes,aabbs,contacts"},
+      // 20 steps: still awake (sleeping bodies keep no contacts to draw).
+      {"stack_aabbs_contacts", closeUp(stackScene, 4, Vec3(0, 2, 0), 9.0), 20, "shapes,aabbs,contacts"},
       // The broad phase: fat boxes and the tree's internal nodes.
       {"balls24_fat_tree", builtin("balls24"), 40, "wire,fat,tree"},
       // Moving bodies: velocity arrows and candidate pairs (wire, so solids hide neither).
