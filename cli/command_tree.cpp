@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "cli/arguments.h"
+#include "cli/tree_view.h"
 #include "cli/commands.h"
 #include "cli/line_plot.h"
 #include "cli/output_folder.h"
@@ -220,6 +221,21 @@ TreeViewSettings readSettings(const Arguments& arguments, const SceneDescription
 }
 
 }  // namespace
+
+render::Image renderTreeRotationFrame(const SceneDescription& scene, int eventIndex, bool after,
+                                      render::Renderer& renderer) {
+  TreeViewSettings settings;
+  settings.width = renderer.options().width;
+  settings.height = renderer.options().height;
+  std::vector<Aabb> boxes;
+  const std::vector<TreeEvent> events = collectEvents(scene, settings, boxes);
+  if (eventIndex < 0 || eventIndex >= static_cast<int>(events.size()))
+    throw std::invalid_argument("tree view: scene '" + scene.name + "' has " + std::to_string(events.size()) +
+                                " rotating insertions, asked for event " + std::to_string(eventIndex));
+  Panels panels{renderer, settings};
+  const TreeEvent& event = events[eventIndex];
+  return renderEventFrame(panels, event, after, treeCamera(event, double(settings.width) / settings.height));
+}
 
 int runTree(const std::vector<std::string>& args) {
   const CommandSpec spec{

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "cli/frame_renderer.h"
+#include "cli/tree_view.h"
 #include "scenes/stacking_scenes.h"
 
 namespace physdbg::golden {
@@ -38,10 +40,17 @@ const std::vector<GoldenCase>& goldenCases() {
       {"balls24_velocities_pairs", builtin("balls24"), 40, "wire,velocities,pairs"},
       // Sleeping bodies (darker) once a small pyramid has settled.
       {"pyramid_sleep", closeUp(pyramid, 4, Vec3(0, 1.8, 0), 8.5), 90, "shapes,sleep,aabbs"},
-      // TODO(tree-rotation view): add the `physdbg tree` rotation view here once
-      // it lands, e.g. {"tree_rotations", ..., "tree"} drawn with drawRotations.
+      // The tree-rotation view: the first insertion of a small pyramid's boxes
+      // that rotates the tree, after the swap (highlighted subtrees, diagram).
+      {"tree_rotation_pyramid", [] { return pyramidScene(4); }, 0, "",
+       [](render::Renderer& renderer) { return cli::renderTreeRotationFrame(pyramidScene(4), 0, true, renderer); }},
   };
   return cases;
+}
+
+render::Image renderGoldenCase(const GoldenCase& golden, render::Renderer& renderer) {
+  if (golden.draw) return golden.draw(renderer);
+  return cli::renderSceneFrame(renderer, golden.scene(), golden.steps, debugdraw::parseLayers(golden.layers));
 }
 
 const GoldenCase& goldenCase(const std::string& name) {

@@ -1,4 +1,5 @@
 #pragma once
+#include "render/renderer.h"
 // The scenes, step counts and debug layers of the golden images. Together the
 // cases cover every debug layer; the golden PNG of case NAME is
 // tests/golden/KEY/NAME.png (KEY: see golden_store.h).
@@ -18,7 +19,12 @@ struct GoldenCase {
   std::function<SceneDescription()> scene;
   int steps = 0;
   std::string layers;
+  // Set for pictures that are not one frame of the scene (the tree-rotation view).
+  std::function<render::Image(render::Renderer&)> draw;
 };
+
+// The case's picture: `draw` when set, else the scene after `steps` steps with `layers`.
+render::Image renderGoldenCase(const GoldenCase& golden, render::Renderer& renderer);
 
 const std::vector<GoldenCase>& goldenCases();
 // Throws std::invalid_argument naming the unknown case.

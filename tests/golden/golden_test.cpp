@@ -30,7 +30,7 @@ render::Renderer& sharedRenderer() {
 }
 
 render::Image renderCase(const GoldenCase& golden, render::Renderer& renderer = sharedRenderer()) {
-  return cli::renderSceneFrame(renderer, golden.scene(), golden.steps, debugdraw::parseLayers(golden.layers));
+  return renderGoldenCase(golden, renderer);
 }
 
 std::string fileBytes(const fs::path& path) {

@@ -26,8 +26,7 @@ int main(int argc, char** argv) {
     std::set<fs::path> written;
     for (const golden::GoldenCase& golden : golden::goldenCases()) {
       const fs::path path = golden::goldenPath(argv[1], key, golden.name);
-      const render::Image image =
-          cli::renderSceneFrame(renderer, golden.scene(), golden.steps, debugdraw::parseLayers(golden.layers));
+      const render::Image image = golden::renderGoldenCase(golden, renderer);
       render::writePng(path.string(), image, 9);
       written.insert(path);
       std::printf("wrote %s (%ju bytes)\n", path.c_str(), static_cast<std::uintmax_t>(fs::file_size(path)));
