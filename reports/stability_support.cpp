@@ -9,26 +9,6 @@
 
 namespace physdbg::reports {
 
-BodyDefinition staticBox(const Vec3& center, const Vec3& halfExtents) {
-  BodyDefinition body;
-  body.collider = std::make_shared<BoxCollider>(halfExtents);
-  body.position = center;
-  body.isStatic = true;
-  return body;
-}
-
-namespace {
-
-BodyDefinition dynamicBody(std::shared_ptr<const Collider> collider, const Vec3& center, double mass) {
-  BodyDefinition body;
-  body.collider = std::move(collider);
-  body.position = center;
-  body.mass = mass;
-  return body;
-}
-
-}  // namespace
-
 BodyDefinition dynamicBox(const Vec3& center, const Vec3& halfExtents, double mass) {
   return dynamicBody(std::make_shared<BoxCollider>(halfExtents), center, mass);
 }

@@ -4,11 +4,11 @@
 #include <vector>
 
 #include "engine/world.h"
+#include "scenes/body_builders.h"
 #include "scenes/scene.h"
 
 namespace physdbg::reports {
 
-BodyDefinition staticBox(const Vec3& center, const Vec3& halfExtents);
 BodyDefinition dynamicBox(const Vec3& center, const Vec3& halfExtents, double mass = 1.0);
 BodyDefinition dynamicSphere(const Vec3& center, double radius, double mass = 1.0);
 

@@ -4,27 +4,13 @@
 
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/sphere_collider.h"
+#include "scenes/body_builders.h"
 #include "scenes/design_scenes.h"
 #include "scenes/scene.h"
 #include "scenes/stacking_scenes.h"
 
 namespace physdbg {
 namespace {
-
-BodyDefinition staticBox(const Vec3& center, const Vec3& halfExtents) {
-  BodyDefinition body;
-  body.collider = std::make_shared<BoxCollider>(halfExtents);
-  body.position = center;
-  body.isStatic = true;
-  return body;
-}
-
-BodyDefinition dynamicBody(std::shared_ptr<const Collider> collider, const Vec3& position) {
-  BodyDefinition body;
-  body.collider = std::move(collider);
-  body.position = position;
-  return body;
-}
 
 // A few boxes and spheres tumbling onto a ground slab: the first thing a new
 // user renders, so every common shape and a static body appear.

@@ -7,6 +7,7 @@
 
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/sphere_collider.h"
+#include "scenes/body_builders.h"
 
 namespace physdbg {
 namespace {
@@ -14,15 +15,6 @@ namespace {
 constexpr double ballRadius = 0.5;
 constexpr double innerHalfWidth = 4.0;  // balls move in [-4, 4] x [-4, 4]
 constexpr double wallHalfHeight = 4.0;  // walls stand from y = 0 to y = 8
-
-BodyDefinition staticBox(const Vec3& center, const Vec3& halfExtents, const Quat& orientation = Quat::Identity()) {
-  BodyDefinition body;
-  body.collider = std::make_shared<BoxCollider>(halfExtents);
-  body.position = center;
-  body.orientation = orientation;
-  body.isStatic = true;
-  return body;
-}
 
 // Floor, four walls and a tilted second ground. The walls overlap the floor
 // and each other at the corners: those static-static overlaps are what the
