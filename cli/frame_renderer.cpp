@@ -22,10 +22,15 @@ render::Camera sceneCamera(const SceneDescription& scene, double aspect) {
   return chooseCamera(scene, framing, aspect);
 }
 
-debugdraw::Frame sceneFrame(const SceneDescription& scene, const World& world, debugdraw::LayerSet layers) {
+debugdraw::Frame sceneFrame(const SceneDescription& scene, const World& world, debugdraw::LayerSet layers,
+                            int imageWidth) {
   debugdraw::Frame frame;
   world.emitDebugDraw(layers, frame);
-  if (layers.has(debugdraw::Layer::Overlay)) addOverlay(scene, world, {}, frame);
+  if (layers.has(debugdraw::Layer::Overlay)) {
+    OverlayCounters counters;
+    counters.imageWidth = imageWidth;
+    addOverlay(scene, world, counters, frame);
+  }
   return frame;
 }
 
@@ -33,7 +38,7 @@ render::Image renderSceneFrame(render::Renderer& renderer, const SceneDescriptio
                                debugdraw::LayerSet layers) {
   const World world = simulateScene(scene, steps);
   const double aspect = double(renderer.options().width) / renderer.options().height;
-  return renderer.render(sceneFrame(scene, world, layers), sceneCamera(scene, aspect));
+  return renderer.render(sceneFrame(scene, world, layers, renderer.options().width), sceneCamera(scene, aspect));
 }
 
 }  // namespace physdbg::cli

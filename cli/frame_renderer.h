@@ -19,7 +19,8 @@ render::Camera sceneCamera(const SceneDescription& scene, double aspect);
 
 // The world's primitives for `layers`; the overlay (when asked for) names the
 // scene, step, simulated time and body count.
-debugdraw::Frame sceneFrame(const SceneDescription& scene, const World& world, debugdraw::LayerSet layers);
+debugdraw::Frame sceneFrame(const SceneDescription& scene, const World& world, debugdraw::LayerSet layers,
+                            int imageWidth = 320);
 
 // All of the above at the renderer's size.
 render::Image renderSceneFrame(render::Renderer& renderer, const SceneDescription& scene, int steps,

@@ -119,7 +119,8 @@ dd::RecordedFrame SceneFrames::frame(int index) {
   if (limitTree && world_.tree()) addTreeDepths(*world_.tree(), options_.treeMinDepth, options_.treeMaxDepth, out.frame);
   if (layers.has(dd::Layer::Overlay))
     addOverlay(scene_, world_,
-               {index, options_.frames.last - 1, options_.timing ? std::optional<double>(lastStepMs_) : std::nullopt},
+               {index, options_.frames.last - 1, options_.timing ? std::optional<double>(lastStepMs_) : std::nullopt,
+                options_.width},
                out.frame);
   out.view = toView(camera());
   drawSeconds_ += secondsSince(start);

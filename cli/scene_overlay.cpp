@@ -12,13 +12,14 @@ void addOverlay(const SceneDescription& scene, const World& world, const Overlay
                                    ? "frame " + std::to_string(*counters.frame) + "/" + std::to_string(*counters.frames)
                                    : "step " + std::to_string(world.stepCount());
   std::snprintf(line, sizeof line, "%s   %s   t = %.3f s", scene.name.c_str(), progress.c_str(), world.time());
-  out.texts.push_back({12, 10, 2, line, {1, 1, 1, 1}});
+  const float scale = counters.imageWidth >= 800 ? 2.0f : 1.0f;
+  out.texts.push_back({6 * scale, 5 * scale, scale, line, {1, 1, 1, 1}});
   const StepStats& stats = world.lastStepStats();
   const int length = std::snprintf(line, sizeof line, "bodies %zu   pairs %d   contacts %d", world.bodyCount(),
                                    stats.candidatePairs, stats.contacts);
   if (counters.stepMs && length > 0 && static_cast<std::size_t>(length) < sizeof line)
     std::snprintf(line + length, sizeof line - length, "   step %.3f ms", *counters.stepMs);
-  out.texts.push_back({12, 34, 2, line, {0.85f, 0.85f, 0.85f, 1}});
+  out.texts.push_back({6 * scale, 17 * scale, scale, line, {0.85f, 0.85f, 0.85f, 1}});
 }
 
 }  // namespace physdbg::cli

@@ -11,6 +11,7 @@ namespace physdbg::cli {
 struct OverlayCounters {
   std::optional<int> frame, frames;  // "frame 3/10" when both are given
   std::optional<double> stepMs;      // measured wall-clock time: leave empty for repeatable pictures
+  int imageWidth = 1280;             // text is drawn at half size below 800 pixels, so it fits
 };
 
 void addOverlay(const SceneDescription& scene, const World& world, const OverlayCounters& counters,
