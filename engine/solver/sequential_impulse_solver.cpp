@@ -39,13 +39,20 @@ inline Vec3 SequentialImpulseSolver::relativeVelocity(const ContactManifold& man
   return (b.linearVelocity + b.angularVelocity.cross(c.armB)) - (a.linearVelocity + a.angularVelocity.cross(c.armA));
 }
 
-inline void SequentialImpulseSolver::applyImpulse(const ContactManifold& manifold, const PointConstraint& c,
-                                           const Vec3& impulse) {
+inline double SequentialImpulseSolver::rowVelocity(const ContactManifold& manifold, const PointConstraint& c,
+                                                  const Vec3& direction, int row) const {
+  const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
+  return (b.linearVelocity - a.linearVelocity).dot(direction) + b.angularVelocity.dot(c.crossB[row]) -
+         a.angularVelocity.dot(c.crossA[row]);
+}
+
+inline void SequentialImpulseSolver::applyRow(const ContactManifold& manifold, const PointConstraint& c,
+                                              const Vec3& direction, int row, double impulse) {
   SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-  a.linearVelocity -= (a.inverseMass * impulse).cwiseProduct(a.linearMask);
-  a.angularVelocity -= (a.inverseInertia * c.armA.cross(impulse)).cwiseProduct(a.angularMask);
-  b.linearVelocity += (b.inverseMass * impulse).cwiseProduct(b.linearMask);
-  b.angularVelocity += (b.inverseInertia * c.armB.cross(impulse)).cwiseProduct(b.angularMask);
+  a.linearVelocity -= (a.inverseMass * impulse) * direction.cwiseProduct(a.linearMask);
+  a.angularVelocity -= impulse * c.turnA[row];
+  b.linearVelocity += (b.inverseMass * impulse) * direction.cwiseProduct(b.linearMask);
+  b.angularVelocity += impulse * c.turnB[row];
 }
 
 double SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
@@ -124,6 +131,13 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
       c.armA = contact - a.position();
       c.armB = contact - b.position();
       tangentBasis(manifold.normal, c.tangent[0], c.tangent[1]);
+      const Vec3 directions[3] = {manifold.normal, c.tangent[0], c.tangent[1]};
+      for (int row = 0; row < 3; ++row) {
+        c.crossA[row] = c.armA.cross(directions[row]);
+        c.crossB[row] = c.armB.cross(directions[row]);
+        c.turnA[row] = (bodyA.inverseInertia * c.crossA[row]).cwiseProduct(bodyA.angularMask);
+        c.turnB[row] = (bodyB.inverseInertia * c.crossB[row]).cwiseProduct(bodyB.angularMask);
+      }
       c.normalMass =
           effectiveMass(inverseMassSum, bodyA.inverseInertia, bodyB.inverseInertia, c.armA, c.armB, manifold.normal);
       for (int t = 0; t < 2; ++t)
@@ -172,9 +186,9 @@ void SequentialImpulseSolver::warmStart(const std::vector<ContactManifold>& mani
     for (int p = 0; p < manifold.pointCount; ++p) {
       const ManifoldPoint& point = manifold.points[p];
       const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-      applyImpulse(manifold, c,
-                   point.normalImpulse * manifold.normal + point.tangentImpulse[0] * c.tangent[0] +
-                       point.tangentImpulse[1] * c.tangent[1]);
+      applyRow(manifold, c, manifold.normal, 0, point.normalImpulse);
+      applyRow(manifold, c, c.tangent[0], 1, point.tangentImpulse[0]);
+      applyRow(manifold, c, c.tangent[1], 2, point.tangentImpulse[1]);
     }
   }
 }
@@ -202,10 +216,10 @@ void SequentialImpulseSolver::solve(std::vector<ContactManifold>& manifolds, dou
         massScale = softness.massScale;
         impulseScale = softness.impulseScale;
       }
-      const double normalVelocity = relativeVelocity(manifold, c).dot(manifold.normal);
+      const double normalVelocity = rowVelocity(manifold, c, manifold.normal, 0);
       const double impulse = -c.normalMass * massScale * (normalVelocity + bias) - impulseScale * point.normalImpulse;
       const double total = std::max(point.normalImpulse + impulse, 0.0);
-      applyImpulse(manifold, c, (total - point.normalImpulse) * manifold.normal);
+      applyRow(manifold, c, manifold.normal, 0, total - point.normalImpulse);
       point.normalImpulse = total;
       c.largestImpulse = std::max(c.largestImpulse, total);
     }
@@ -213,10 +227,9 @@ void SequentialImpulseSolver::solve(std::vector<ContactManifold>& manifolds, dou
       const int p = reversed ? manifold.pointCount - 1 - visit : visit;
       ManifoldPoint& point = manifold.points[p];
       const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-      const Vec3 relative = relativeVelocity(manifold, c);
       double tangentImpulse[2];
       for (int t = 0; t < 2; ++t)
-        tangentImpulse[t] = point.tangentImpulse[t] - c.tangentMass[t] * relative.dot(c.tangent[t]);
+        tangentImpulse[t] = point.tangentImpulse[t] - c.tangentMass[t] * rowVelocity(manifold, c, c.tangent[t], t + 1);
       const double limit = c.friction * point.normalImpulse;
       const double squared = tangentImpulse[0] * tangentImpulse[0] + tangentImpulse[1] * tangentImpulse[1];
       if (squared > limit * limit && squared > 0.0) {
@@ -224,9 +237,8 @@ void SequentialImpulseSolver::solve(std::vector<ContactManifold>& manifolds, dou
         tangentImpulse[0] *= scale;
         tangentImpulse[1] *= scale;
       }
-      applyImpulse(manifold, c,
-                   (tangentImpulse[0] - point.tangentImpulse[0]) * c.tangent[0] +
-                       (tangentImpulse[1] - point.tangentImpulse[1]) * c.tangent[1]);
+      applyRow(manifold, c, c.tangent[0], 1, tangentImpulse[0] - point.tangentImpulse[0]);
+      applyRow(manifold, c, c.tangent[1], 2, tangentImpulse[1] - point.tangentImpulse[1]);
       point.tangentImpulse[0] = tangentImpulse[0];
       point.tangentImpulse[1] = tangentImpulse[1];
     }
@@ -243,10 +255,10 @@ void SequentialImpulseSolver::applyRestitution(std::vector<ContactManifold>& man
       ManifoldPoint& point = manifold.points[p];
       const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
       if (c.restitution == 0.0 || c.largestImpulse == 0.0) continue;
-      const double normalVelocity = relativeVelocity(manifold, c).dot(manifold.normal);
+      const double normalVelocity = rowVelocity(manifold, c, manifold.normal, 0);
       const double target = -c.restitution * c.approachVelocity;
       const double total = std::max(point.normalImpulse - c.normalMass * (normalVelocity - target), 0.0);
-      applyImpulse(manifold, c, (total - point.normalImpulse) * manifold.normal);
+      applyRow(manifold, c, manifold.normal, 0, total - point.normalImpulse);
       point.normalImpulse = total;
     }
   }

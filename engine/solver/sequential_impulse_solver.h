@@ -25,9 +25,15 @@ class SequentialImpulseSolver {
               std::vector<ContactManifold>& manifolds, double dt, const SolverSettings& settings);
 
  private:
+  // Rows of a contact point: 0 the normal, 1 and 2 the tangents. For each,
+  // the arm crossed with the direction and the angular velocity change a unit
+  // impulse causes (inverse inertia applied, locked axes zeroed) are kept,
+  // so the inner loop does no matrix products.
   struct PointConstraint {
     Vec3 armA, armB;  // from the centres of mass at the start of the step
     Vec3 tangent[2];
+    Vec3 crossA[3], crossB[3];
+    Vec3 turnA[3], turnB[3];
     double normalMass = 0, tangentMass[2] = {0, 0};
     double friction = 0;
     double approachVelocity = 0;  // normal velocity before the solve, for restitution
@@ -61,7 +67,10 @@ class SequentialImpulseSolver {
   double largestPenetration(const std::vector<ContactManifold>& manifolds) const;
   double separation(const ContactManifold& manifold, const ManifoldPoint& point) const;
   Vec3 relativeVelocity(const ContactManifold& manifold, const PointConstraint& constraint) const;
-  void applyImpulse(const ContactManifold& manifold, const PointConstraint& constraint, const Vec3& impulse);
+  double rowVelocity(const ContactManifold& manifold, const PointConstraint& constraint, const Vec3& direction,
+                     int row) const;
+  void applyRow(const ContactManifold& manifold, const PointConstraint& constraint, const Vec3& direction, int row,
+                double impulse);
 
   std::vector<SolverBody> solverBodies_;
   std::vector<std::uint32_t> active_;  // movable bodies that appear in a manifold

@@ -30,16 +30,16 @@ SceneDescription pyramid(int base) { return pyramidScene(base); }
 const std::vector<GoldenCase>& goldenCases() {
   static const std::vector<GoldenCase> cases = {
       // Solid and wire shapes of every common collider, and the overlay text.
-      {"default_shapes_wire_overlay", builtin("default"), 45, "shapes,wire,overlay"},
+      {"default_shapes_wire_overlay", builtin("default"), 45, "shapes,wire,overlay", {}},
       // Resting contacts: red AABBs of touching bodies, contact points and normals.
       // 20 steps: still awake (sleeping bodies keep no contacts to draw).
-      {"stack_aabbs_contacts", closeUp(stackScene, 4, Vec3(0, 2, 0), 9.0), 20, "shapes,aabbs,contacts"},
+      {"stack_aabbs_contacts", closeUp(stackScene, 4, Vec3(0, 2, 0), 9.0), 20, "shapes,aabbs,contacts", {}},
       // The broad phase: fat boxes and the tree's internal nodes.
-      {"balls24_fat_tree", builtin("balls24"), 40, "wire,fat,tree"},
+      {"balls24_fat_tree", builtin("balls24"), 40, "wire,fat,tree", {}},
       // Moving bodies: velocity arrows and candidate pairs (wire, so solids hide neither).
-      {"balls24_velocities_pairs", builtin("balls24"), 40, "wire,velocities,pairs"},
+      {"balls24_velocities_pairs", builtin("balls24"), 40, "wire,velocities,pairs", {}},
       // Sleeping bodies (darker) once a small pyramid has settled.
-      {"pyramid_sleep", closeUp(pyramid, 4, Vec3(0, 1.8, 0), 8.5), 90, "shapes,sleep,aabbs"},
+      {"pyramid_sleep", closeUp(pyramid, 4, Vec3(0, 1.8, 0), 8.5), 90, "shapes,sleep,aabbs", {}},
       // The tree-rotation view: the first insertion of a small pyramid's boxes
       // that rotates the tree, after the swap (highlighted subtrees, diagram).
       {"tree_rotation_pyramid", [] { return pyramidScene(4); }, 0, "",
