@@ -141,13 +141,19 @@ void World::findContacts() {
   const bool speculative = settings_.solver.kind == SolverKind::SequentialImpulse;
   for (const BodyPair& pair : pairs_) {
     const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
+    // Fat boxes overlap long before the shapes can touch: when even the tight
+    // boxes, grown by how far the pair can close this step, stay apart, the
+    // narrow phase has nothing to say.
+    const double reach = speculative ? speculativeDistance(pair) : settings_.narrowPhase.touchingTolerance;
+    if (!a.collider().worldBounds(a.transform()).enlarged(reach).overlaps(b.collider().worldBounds(b.transform()))) {
+      ++stats_.boundsRejected;
+      continue;
+    }
     const ContactResult result =
         collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase);
     stats_.narrowPhase.add(result);
-    if (speculative) {
-      const double reach = speculativeDistance(pair);
-      if (result.status != ContactStatus::Separated || result.distance <= reach) addManifold(pair, result, reach);
-    }
+    if (speculative && (result.status != ContactStatus::Separated || result.distance <= reach))
+      addManifold(pair, result, reach);
     // The solver holds resting bodies a hair apart (a speculative point aims
     // at zero gap), so with it "touching" means within the linear slop.
     const double touchingGap = speculative ? settings_.solver.linearSlop : 0.0;

@@ -60,6 +60,7 @@ struct StepStats {
   int sleepingBodies = 0;
   int lockedBodies = 0;  // awake bodies with an axis lock: the only ones that do lock work
   int candidatePairs = 0;
+  int boundsRejected = 0;  // candidate pairs whose tight boxes were too far apart for the narrow phase
   int staticPairsTested = 0;
   int contacts = 0;
   int responses = 0;
