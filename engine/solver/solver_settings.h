@@ -16,12 +16,14 @@ struct SolverSettings {
   int substeps = 8;
   int velocityIterations = 2;
   bool warmStarting = true;
-  // Penetration left in place so resting contacts stay in contact; also the
-  // gap within which bodies count as touching for events.
+  // Metres. Bodies this close count as touching (events, red boxes), and
+  // contacts are built from 4 slops apart so resting pairs are found before
+  // they touch.
   double linearSlop = 0.005;
-  // Soft contact: overlap is pushed out like a spring of this frequency and
-  // damping ratio (heavily over-damped), at most maxPushSpeed. Position error
-  // never becomes bounce: a 25% overlap is undone in a few steps, calmly.
+  // Soft contact: overlap is pushed out like a spring of this frequency
+  // (never above a quarter of the substep rate, where it would ring) and
+  // damping ratio, at most maxPushSpeed. Position error never becomes bounce:
+  // a 25% overlap is undone in a few steps, calmly.
   double contactHertz = 60.0;
   double dampingRatio = 5.0;
   double maxPushSpeed = 3.0;  // m/s
