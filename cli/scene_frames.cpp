@@ -11,6 +11,7 @@
 #include "cli/scene_camera.h"
 #include "cli/scene_overlay.h"
 #include "engine/broadphase/dynamic_aabb_tree.h"
+#include "engine/broadphase/tree_debug_draw.h"
 
 namespace physdbg::cli {
 namespace {
@@ -19,16 +20,6 @@ namespace dd = debugdraw;
 using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-// The tree layer limited to depths [minDepth, maxDepth], coloured like the world's own tree layer.
-void addTreeDepths(const DynamicAabbTree& tree, int minDepth, int maxDepth, dd::Frame& frame) {
-  tree.forEachNode([&](const Aabb& box, int depth, bool isLeaf) {
-    if (isLeaf || depth < minDepth || depth > maxDepth) return;
-    const float lift = std::min(0.6f, 0.08f * static_cast<float>(depth));
-    const dd::Color color{dd::colors::treeNode.r + lift, dd::colors::treeNode.g + lift, 1.0f, 1.0f};
-    frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), color});
-  });
-}
 
 // A view of the body from a few of its sizes away, so it fills about a third of the picture.
 render::Camera followCamera(const RigidBody& body, double aspect) {
@@ -116,7 +107,13 @@ dd::RecordedFrame SceneFrames::frame(int index) {
   const bool limitTree = layers.has(dd::Layer::Tree) && (options_.treeMinDepth > 0 || options_.treeMaxDepth < (1 << 30));
   if (limitTree) layers.bits &= ~static_cast<std::uint32_t>(dd::Layer::Tree);
   world_.emitDebugDraw(layers, out.frame);
-  if (limitTree && world_.tree()) addTreeDepths(*world_.tree(), options_.treeMinDepth, options_.treeMaxDepth, out.frame);
+  if (limitTree && world_.tree()) {
+    TreeDrawOptions tree;
+    tree.leaves = false;
+    tree.minDepth = options_.treeMinDepth;
+    tree.maxDepth = options_.treeMaxDepth;
+    drawTree(*world_.tree(), tree, out.frame);
+  }
   if (layers.has(dd::Layer::Overlay))
     addOverlay(scene_, world_,
                {index, options_.frames.last - 1, options_.timing ? std::optional<double>(lastStepMs_) : std::nullopt,

@@ -14,7 +14,7 @@ debugdraw::WireBox wireBox(const Aabb& box, debugdraw::Color color) {
 void drawTree(const DynamicAabbTree& tree, const TreeDrawOptions& options, debugdraw::Frame& frame) {
   const int height = std::max(1, tree.height());
   tree.forEachNode([&](const Aabb& box, int depth, bool isLeaf) {
-    if (depth > options.maxDepth) return;
+    if (depth < options.minDepth || depth > options.maxDepth) return;
     if (isLeaf) {
       if (options.leaves) frame.wireBoxes.push_back(wireBox(box, debugdraw::colors::fatBox));
       return;

@@ -11,6 +11,7 @@ struct TreeDrawOptions {
   bool internalNodes = true;
   bool leaves = true;
   int maxDepth = 1 << 30;  // deeper nodes are skipped (a 30k-body tree is a blur otherwise)
+  int minDepth = 0;        // shallower nodes are skipped (to look inside a big tree)
 };
 
 void drawTree(const DynamicAabbTree& tree, const TreeDrawOptions& options, debugdraw::Frame& frame);

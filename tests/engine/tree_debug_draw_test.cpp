@@ -26,6 +26,10 @@ TEST(TreeDebugDraw, DrawsEveryNodeOnceAndHonoursDepthAndKinds) {
   const Aabb& root = tree.box(tree.root());
   EXPECT_TRUE(top.wireBoxes[0].center.isApprox(root.center()));
   EXPECT_TRUE(top.wireBoxes[0].halfExtents.isApprox(root.halfExtents()));
+
+  debugdraw::Frame band;
+  drawTree(tree, {true, false, 2, 1}, band);
+  EXPECT_EQ(band.wireBoxes.size(), 6u);  // the two children of the root and their four children
 }
 
 TEST(TreeDebugDraw, DrawsTwoBoxesAndALinePerRotation) {
