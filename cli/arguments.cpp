@@ -87,7 +87,9 @@ std::string helpText(const CommandSpec& spec) {
     else left += "  ";
     text << left << option.help << "\n";
   }
-  text << "  -h, --help                  show this help\n";
+  std::string help = "  -h, --help";
+  help.resize(28, ' ');
+  text << help << "show this help\n";
   return text.str();
 }
 
