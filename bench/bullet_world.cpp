@@ -8,6 +8,7 @@
 #include "engine/colliders/sphere_collider.h"
 
 #ifdef PHYSDBG_HAVE_BULLET
+#include "bench/bullet_convert.h"
 #include <btBulletDynamicsCommon.h>
 #endif
 
@@ -15,8 +16,6 @@ namespace physdbg::bench {
 
 #ifdef PHYSDBG_HAVE_BULLET
 namespace {
-
-btVector3 toBullet(const Vec3& v) { return btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z())); }
 
 std::unique_ptr<btCollisionShape> makeShape(const Collider& collider) {
   if (const auto* sphere = dynamic_cast<const SphereCollider*>(&collider)) {

@@ -3,6 +3,7 @@
 #include "bench/tree_bench_support.h"
 
 #ifdef PHYSDBG_HAVE_BULLET
+#include "bench/bullet_convert.h"
 #include <BulletCollision/BroadphaseCollision/btDbvt.h>
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
@@ -13,8 +14,6 @@ namespace physdbg::bench {
 
 #ifdef PHYSDBG_HAVE_BULLET
 namespace {
-
-btVector3 toBullet(const Vec3& v) { return btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z())); }
 
 double surfaceArea(const btDbvtVolume& volume) {
   const btVector3 d = volume.Maxs() - volume.Mins();
