@@ -234,7 +234,11 @@ void World::solveContacts() {
   movable_.resize(bodies_.size());
   for (BodyId id = 0; id < bodies_.size(); ++id) movable_[id] = isMoving(id);
   if (settings_.solver.warmStarting) warmStartFromPreviousStep();
-  stats_.largestPenetration = solver_.step(bodies_, movable_, manifolds_, settings_.dt, settings_.solver);
+  const SolverStepReport report =
+      solver_.step(bodies_, movable_, manifolds_, settings_.dt, settings_.solver, settings_.gravity);
+  stats_.largestPenetration = report.largestPenetration;
+  stats_.substeps = report.substeps;
+  stats_.contactHertz = report.contactHertz;
   stats_.responses = static_cast<int>(manifolds_.size());
 }
 

@@ -89,6 +89,23 @@ void emitContacts(const std::vector<Contact>& contacts, double scale, dd::Frame&
   }
 }
 
+// Under the sequential-impulse solver the contact is the manifold: every
+// point it holds the bodies with (within the linear slop), each with the
+// pair's normal. Speculative points further apart are left out.
+void emitManifoldPoints(const std::vector<ContactManifold>& manifolds, double touching, double scale,
+                        dd::Frame& frame) {
+  for (const ContactManifold& manifold : manifolds) {
+    for (int p = 0; p < manifold.pointCount; ++p) {
+      const ManifoldPoint& contact = manifold.points[p];
+      if (contact.separation > touching) continue;
+      const Vec3 point = 0.5 * (contact.pointA + contact.pointB);
+      frame.points.push_back({point, 7.0f, dd::colors::contactPoint});
+      const double length = scale * (0.25 + 4.0 * std::max(-contact.separation, 0.0));
+      frame.arrows.push_back({point, point + manifold.normal * length, dd::colors::contactNormal});
+    }
+  }
+}
+
 }  // namespace
 
 void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame) const {
@@ -124,7 +141,13 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame) const {
     options.leaves = false;  // the fat boxes are the `fat` layer
     if (const DynamicAabbTree* broadPhaseTree = tree()) drawTree(*broadPhaseTree, options, frame);
   }
-  if (layers.has(dd::Layer::Contacts)) emitContacts(contacts_, std::max(typicalSize, 0.2), frame);
+  if (layers.has(dd::Layer::Contacts)) {
+    const double scale = std::max(typicalSize, 0.2);
+    if (settings_.solver.kind == SolverKind::SequentialImpulse)
+      emitManifoldPoints(manifolds_, settings_.solver.linearSlop, scale, frame);
+    else
+      emitContacts(contacts_, scale, frame);
+  }
   if (layers.has(dd::Layer::Pairs)) {
     for (const BodyPair& pair : pairs_)
       frame.lines.push_back({bodies_[pair.a].position(), bodies_[pair.b].position(), {0.9f, 0.5f, 0.9f, 1}});

@@ -249,7 +249,7 @@ void readBody(const SceneReader& reader, const json& value, const std::string& p
 
 void readSolver(const SceneReader& reader, const json& value, const std::string& path, SolverSettings& solver) {
   reader.requireObject(value, path);
-  reader.checkKeys(value, path, {"kind", "iterations", "substeps"});
+  reader.checkKeys(value, path, {"kind", "iterations", "substeps", "max_substeps"});
   if (value.contains("kind")) {
     const std::string kind = reader.string(value["kind"], path + ".kind");
     if (kind == "seed") solver.kind = SolverKind::Seed;
@@ -263,6 +263,14 @@ void readSolver(const SceneReader& reader, const json& value, const std::string&
   if (value.contains("substeps")) {
     solver.substeps = reader.positiveInteger(value["substeps"], path + ".substeps");
     if (solver.substeps > 1000) reader.fail(path + ".substeps", "must be at most 1000");
+  }
+  if (value.contains("max_substeps")) {
+    solver.maxSubsteps = reader.positiveInteger(value["max_substeps"], path + ".max_substeps");
+    if (solver.maxSubsteps > 1000) reader.fail(path + ".max_substeps", "must be at most 1000");
+    if (solver.maxSubsteps < solver.substeps)
+      reader.fail(path + ".max_substeps",
+                  "must be at least substeps (" + std::to_string(solver.substeps) + "), got " +
+                      std::to_string(solver.maxSubsteps));
   }
 }
 

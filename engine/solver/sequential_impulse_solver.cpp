@@ -1,5 +1,7 @@
 #include "engine/solver/sequential_impulse_solver.h"
 
+#include "engine/solver/resting_load.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -55,24 +57,29 @@ inline void SequentialImpulseSolver::applyRow(const ContactManifold& manifold, c
   b.angularVelocity += impulse * c.turnB[row];
 }
 
-double SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-                                     std::vector<ContactManifold>& manifolds, double dt,
-                                     const SolverSettings& settings) {
-  const int substeps = std::max(settings.substeps, 1);
-  const double h = dt / substeps;
-  // Stiffer than a quarter of the substep rate would ring.
+SolverStepReport SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                                               std::vector<ContactManifold>& manifolds, double dt,
+                                               const SolverSettings& settings, const Vec3& gravity) {
+  const double g = gravity.norm();
+  const std::vector<double> loads =
+      g > 0.0 ? restingLoads(bodies, movable, manifolds, -gravity / g) : std::vector<double>(manifolds.size(), 0.0);
+  prepare(bodies, movable, manifolds, settings);
+  const Stiffness stiffness = chooseStiffness(manifolds, loads, g, dt, settings);
+  const double h = dt / stiffness.substeps;
+  if (settings.warmStarting) {
+    rescaleWarmStart(manifolds, h);
+    seedNewContacts(manifolds, loads, g, h, settings.linearSlop);
+  }
   Softness softness;
-  const double hertz = std::min(settings.contactHertz, 0.25 / h);
-  if (hertz > 0.0) {
-    const double omega = 2.0 * std::numbers::pi * hertz;
+  if (stiffness.hertz > 0.0) {
+    const double omega = 2.0 * std::numbers::pi * stiffness.hertz;
     const double a1 = 2.0 * settings.dampingRatio + h * omega;
     const double a2 = h * omega * a1;
     const double a3 = 1.0 / (1.0 + a2);
     softness = {omega / a1, a2 * a3, a3};
   }
-  prepare(bodies, movable, manifolds, settings);
   const Softness rigid;
-  for (int substep = 0; substep < substeps; ++substep) {
+  for (int substep = 0; substep < stiffness.substeps; ++substep) {
     for (std::size_t i = 0; i < bodies.size(); ++i)
       if (movable[i]) bodies[i].integrateVelocity(h);
     loadVelocities(bodies);
@@ -90,7 +97,52 @@ double SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, const std::
   loadVelocities(bodies);
   applyRestitution(manifolds);
   storeVelocities(bodies);
-  return largestPenetration(manifolds);
+  return {largestPenetration(manifolds), stiffness.substeps, stiffness.hertz};
+}
+
+// The contact frequency is the settings' unless the most loaded touching
+// point would then settle deeper than restingOverlap; substeps follow the
+// frequency, since a soft contact stiffer than a quarter of the substep rate
+// rings. Past maxSubsteps the frequency is capped and the overlap grows.
+SequentialImpulseSolver::Stiffness SequentialImpulseSolver::chooseStiffness(
+    const std::vector<ContactManifold>& manifolds, const std::vector<double>& loads, double gravity, double dt,
+    const SolverSettings& settings) const {
+  const int fewest = std::max(settings.substeps, 1);
+  const int most = std::max(settings.maxSubsteps, fewest);
+  double hertz = settings.contactHertz;
+  if (hertz > 0.0 && settings.restingOverlap > 0.0 && most > fewest) {
+    double loadRatio = 0.0;  // largest supported mass per point / effective mass of the point
+    for (std::size_t m = 0; m < manifolds.size(); ++m) {
+      if (loads[m] == 0.0) continue;
+      const int touching = touchingPoints(manifolds[m], settings.linearSlop);
+      for (int p = 0; p < manifolds[m].pointCount && touching > 0; ++p) {
+        const double mass = constraints_[m * ContactManifold::maxPoints + p].normalMass;
+        if (mass > 0.0) loadRatio = std::max(loadRatio, loads[m] / touching / mass);
+      }
+    }
+    const double needed = std::sqrt(loadRatio * gravity / settings.restingOverlap) / (2.0 * std::numbers::pi);
+    hertz = std::max(hertz, needed);
+  }
+  // Substeps that make `hertz` a quarter of the substep rate, within bounds.
+  const double wanted = std::ceil(4.0 * hertz * dt - 1e-9);
+  const int substeps = static_cast<int>(std::clamp(wanted, static_cast<double>(fewest), static_cast<double>(most)));
+  return {substeps, std::min(hertz, 0.25 * substeps / dt)};
+}
+
+// Impulses carried from the last step were found over its substep; a step
+// with a different substep scales them so they still mean the same force.
+void SequentialImpulseSolver::rescaleWarmStart(std::vector<ContactManifold>& manifolds, double substep) {
+  if (previousSubstep_ > 0.0 && substep != previousSubstep_) {
+    const double scale = substep / previousSubstep_;
+    for (ContactManifold& manifold : manifolds)
+      for (int p = 0; p < manifold.pointCount; ++p) {
+        ManifoldPoint& point = manifold.points[p];
+        point.normalImpulse *= scale;
+        point.tangentImpulse[0] *= scale;
+        point.tangentImpulse[1] *= scale;
+      }
+  }
+  previousSubstep_ = substep;
 }
 
 void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,

@@ -7,6 +7,12 @@
 // the push so it leaves no velocity behind. Restitution is applied once at
 // the end. Speculative points (still apart) let a body close exactly its gap:
 // no tunnelling, and no energy from position correction.
+//
+// Mass ratios: a soft contact's stiffness follows its effective mass, so a
+// light body under a heavy one would sink far (resting_load.h). Each step
+// finds the weight every contact holds, stiffens the contacts (and takes
+// more substeps) until the most loaded one settles within restingOverlap,
+// and starts new contacts at their load.
 #include <vector>
 
 #include "engine/contacts/contact_manifold.h"
@@ -15,14 +21,22 @@
 
 namespace physdbg {
 
+struct SolverStepReport {
+  double largestPenetration = 0.0;  // left after the step, m
+  int substeps = 0;                 // taken this step
+  double contactHertz = 0.0;        // stiffness used this step
+};
+
 class SequentialImpulseSolver {
  public:
   // Advances every movable body by dt (velocities and positions) while
   // solving the manifolds. `movable[i]` false: body i is immovable this step
   // (static, asleep or frozen). Impulses in the manifolds warm-start the solve
-  // and hold the final ones afterwards. Returns the largest penetration left.
-  double step(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-              std::vector<ContactManifold>& manifolds, double dt, const SolverSettings& settings);
+  // and hold the final ones afterwards. Gravity tells which contacts hold
+  // weight (resting_load.h).
+  SolverStepReport step(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                        std::vector<ContactManifold>& manifolds, double dt, const SolverSettings& settings,
+                        const Vec3& gravity);
 
  private:
   // Rows of a contact point: 0 the normal, 1 and 2 the tangents. For each,
@@ -55,6 +69,13 @@ class SequentialImpulseSolver {
     double inverseMass = 0;
   };
 
+  struct Stiffness {
+    int substeps = 1;
+    double hertz = 0.0;
+  };
+  Stiffness chooseStiffness(const std::vector<ContactManifold>& manifolds, const std::vector<double>& loads,
+                            double gravity, double dt, const SolverSettings& settings) const;
+  void rescaleWarmStart(std::vector<ContactManifold>& manifolds, double substep);
   void prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                std::vector<ContactManifold>& manifolds, const SolverSettings& settings);
   void loadVelocities(const std::vector<RigidBody>& bodies);
@@ -75,6 +96,7 @@ class SequentialImpulseSolver {
   std::vector<SolverBody> solverBodies_;
   std::vector<std::uint32_t> active_;  // movable bodies that appear in a manifold
   std::vector<PointConstraint> constraints_;  // maxPoints per manifold
+  double previousSubstep_ = 0.0;  // the substep the manifolds' impulses were found with
 };
 
 }  // namespace physdbg

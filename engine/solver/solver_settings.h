@@ -27,6 +27,14 @@ struct SolverSettings {
   double contactHertz = 60.0;
   double dampingRatio = 5.0;
   double maxPushSpeed = 3.0;  // m/s
+  // A soft contact under load settles at (load / effective mass) g / omega^2
+  // (resting_load.h). When the most loaded contact would settle deeper than
+  // this (m), the step raises the contact frequency to match and takes the
+  // substeps that frequency needs (a quarter of the substep rate), up to
+  // maxSubsteps. Ordinary piles stay at `substeps`; a 10 kg box on a 0.1 kg
+  // box takes 12. maxSubsteps = substeps turns this off.
+  double restingOverlap = 0.0025;
+  int maxSubsteps = 32;
   // Approach speeds below this (m/s) do not bounce.
   double restitutionThreshold = 0.2;
   // Tangential speeds below this (m/s) use static friction, above it dynamic.

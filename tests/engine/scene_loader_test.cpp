@@ -178,10 +178,12 @@ TEST(SceneLoader, CapsuleConvexAndWorldKeys) {
   EXPECT_FALSE(scene.world.allowSleep);
   EXPECT_EQ(scene.world.solver.kind, SolverKind::SequentialImpulse);
   const SceneDescription seed =
-      parseScene(R"({"solver": {"kind": "seed", "iterations": 3, "substeps": 8}, "bodies": []})", "s.json");
+      parseScene(R"({"solver": {"kind": "seed", "iterations": 3, "substeps": 8, "max_substeps": 8}, "bodies": []})",
+                 "s.json");
   EXPECT_EQ(seed.world.solver.kind, SolverKind::Seed);
   EXPECT_EQ(seed.world.solver.velocityIterations, 3);
   EXPECT_EQ(seed.world.solver.substeps, 8);
+  EXPECT_EQ(seed.world.solver.maxSubsteps, 8);
   EXPECT_EQ(scene.world.broadPhase, BroadPhaseKind::BruteForce);
   ASSERT_EQ(scene.bodies.size(), 2u);
   EXPECT_EQ(scene.bodies[0].collider->kind(), ColliderKind::Capsule);
@@ -211,6 +213,9 @@ TEST(SceneLoader, RejectsBadCapsulesHullsAndWorldKeys) {
   EXPECT_NE(message(R"({"solver": {"kind": "pgs"}, "bodies": []})").find("solver.kind"), std::string::npos);
   EXPECT_NE(message(R"({"solver": {"iterations": 0}, "bodies": []})").find("solver.iterations"), std::string::npos);
   EXPECT_NE(message(R"({"solver": {"warm": true}, "bodies": []})").find("solver.warm"), std::string::npos);
+  EXPECT_NE(message(R"({"solver": {"substeps": 8, "max_substeps": 4}, "bodies": []})")
+                .find("solver.max_substeps: must be at least substeps (8), got 4"),
+            std::string::npos);
 }
 
 }  // namespace

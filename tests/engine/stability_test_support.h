@@ -14,9 +14,6 @@ namespace physdbg::reports {
 // name -> why the engine fails it today (see the report of issue 9).
 inline const std::map<std::string, std::string>& knownEngineFailures() {
   static const std::map<std::string, std::string> failures = {
-      {"mass_ratio_1000",
-       "soft contacts yield under a 1000x load: a contact spring scaled to the light box's effective mass sinks "
-       "(load / effective mass) g / omega^2, and the heavy box slides off sideways"},
       {"tiny_bodies",
        "the linear slop (5 mm) and speculative margin are absolute, as large as a 5 mm cube, so a stack of them "
        "settles and creeps by about 12% of their size"},

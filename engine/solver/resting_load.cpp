@@ -1,0 +1,81 @@
+#include "engine/solver/resting_load.h"
+
+#include <algorithm>
+
+namespace physdbg {
+namespace {
+
+constexpr double supportCosine = 0.70710678118654752;  // 45 degrees from straight up
+
+bool hasImpulse(const ContactManifold& manifold) {
+  for (int p = 0; p < manifold.pointCount; ++p)
+    if (manifold.points[p].normalImpulse != 0.0) return true;
+  return false;
+}
+
+struct Support {
+  std::size_t manifold;
+  std::uint32_t supporter;
+  double cosine;  // of the angle between the normal and up
+};
+
+// supports[body]: the manifolds on which body rests.
+std::vector<std::vector<Support>> findSupports(std::size_t bodyCount, const std::vector<bool>& movable,
+                                               const std::vector<ContactManifold>& manifolds, const Vec3& up) {
+  std::vector<std::vector<Support>> supports(bodyCount);
+  for (std::size_t m = 0; m < manifolds.size(); ++m) {
+    const ContactManifold& manifold = manifolds[m];
+    const double cosine = manifold.normal.dot(up);  // the normal points from a to b
+    if (cosine >= supportCosine && movable[manifold.b])
+      supports[manifold.b].push_back({m, manifold.a, cosine});
+    else if (cosine <= -supportCosine && movable[manifold.a])
+      supports[manifold.a].push_back({m, manifold.b, -cosine});
+  }
+  return supports;
+}
+
+}  // namespace
+
+std::vector<double> restingLoads(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                                 const std::vector<ContactManifold>& manifolds, const Vec3& up) {
+  std::vector<double> manifoldLoad(manifolds.size(), 0.0);
+  if (manifolds.empty()) return manifoldLoad;
+  const std::vector<std::vector<Support>> supports = findSupports(bodies.size(), movable, manifolds, up);
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t id = 0; id < bodies.size(); ++id)
+    if (!supports[id].empty()) order.push_back(id);
+  // Ties keep id order, so the walk is deterministic.
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) {
+    return bodies[x].position().dot(up) > bodies[y].position().dot(up);
+  });
+  std::vector<double> carried(bodies.size(), 0.0);
+  for (std::uint32_t id : order) {
+    const double share = (carried[id] + bodies[id].mass()) / static_cast<double>(supports[id].size());
+    for (const Support& support : supports[id]) {
+      manifoldLoad[support.manifold] += share / support.cosine;
+      if (movable[support.supporter]) carried[support.supporter] += share;
+    }
+  }
+  return manifoldLoad;
+}
+
+int touchingPoints(const ContactManifold& manifold, double touching) {
+  int count = 0;
+  for (int p = 0; p < manifold.pointCount; ++p) count += manifold.points[p].separation <= touching ? 1 : 0;
+  return count;
+}
+
+void seedNewContacts(std::vector<ContactManifold>& manifolds, const std::vector<double>& loads, double gravity,
+                     double h, double touching) {
+  for (std::size_t m = 0; m < manifolds.size(); ++m) {
+    ContactManifold& manifold = manifolds[m];
+    if (loads[m] == 0.0 || hasImpulse(manifold)) continue;
+    const int count = touchingPoints(manifold, touching);
+    if (count == 0) continue;
+    const double impulse = loads[m] * gravity * h / count;
+    for (int p = 0; p < manifold.pointCount; ++p)
+      if (manifold.points[p].separation <= touching) manifold.points[p].normalImpulse = impulse;
+  }
+}
+
+}  // namespace physdbg
