@@ -1,10 +1,11 @@
 #include "engine/solver/sequential_impulse_solver.h"
 
-#include "engine/solver/resting_load.h"
-
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "engine/solver/resting_load.h"
 
 namespace physdbg {
 namespace {
@@ -20,6 +21,18 @@ void tangentBasis(const Vec3& normal, Vec3& first, Vec3& second) {
 // Friction of a pair: geometric mean, so a frictionless surface (0) makes
 // any pair on it frictionless and equal materials keep their value.
 double combineFriction(double a, double b) { return std::sqrt(a * b); }
+
+// Eigenvalues below 1e-9 of the largest count as zero: the directions the
+// points cannot move in independently get no impulse.
+Eigen::Matrix4d pseudoInverse(const Eigen::Matrix4d& matrix) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(matrix);
+  const Eigen::Vector4d values = eigen.eigenvalues();
+  const double largest = values.cwiseAbs().maxCoeff();
+  Eigen::Vector4d inverse = Eigen::Vector4d::Zero();
+  for (int i = 0; i < 4; ++i)
+    if (values[i] > 1e-9 * largest) inverse[i] = 1.0 / values[i];
+  return eigen.eigenvectors() * inverse.asDiagonal() * eigen.eigenvectors().transpose();
+}
 
 double effectiveMass(double inverseMassSum, const Mat3& inverseInertiaA, const Mat3& inverseInertiaB, const Vec3& armA,
                      const Vec3& armB, const Vec3& direction) {
@@ -42,7 +55,7 @@ inline Vec3 SequentialImpulseSolver::relativeVelocity(const ContactManifold& man
 }
 
 inline double SequentialImpulseSolver::rowVelocity(const ContactManifold& manifold, const PointConstraint& c,
-                                                  const Vec3& direction, int row) const {
+                                                   const Vec3& direction, int row) const {
   const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
   return (b.linearVelocity - a.linearVelocity).dot(direction) + b.angularVelocity.dot(c.crossB[row]) -
          a.angularVelocity.dot(c.crossA[row]);
@@ -64,6 +77,7 @@ SolverStepReport SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, c
   const std::vector<double> loads =
       g > 0.0 ? restingLoads(bodies, movable, manifolds, -gravity / g) : std::vector<double>(manifolds.size(), 0.0);
   prepare(bodies, movable, manifolds, settings);
+  prepareApproaches(manifolds);
   const Stiffness stiffness = chooseStiffness(manifolds, loads, g, dt, settings);
   const double h = dt / stiffness.substeps;
   if (settings.warmStarting) {
@@ -179,9 +193,13 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
     for (int p = 0; p < manifold.pointCount; ++p) {
       ManifoldPoint& point = manifold.points[p];
       PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-      const Vec3 contact = 0.5 * (point.pointA + point.pointB);
-      c.armA = contact - a.position();
-      c.armB = contact - b.position();
+      // Touching or overlapping, both bodies push at the midpoint. A
+      // speculative point may still be metres from the other body; there
+      // each pushes at its own surface, or friction gets a long lever.
+      const bool apart = point.separation > settings.linearSlop;
+      const Vec3 middle = 0.5 * (point.pointA + point.pointB);
+      c.armA = (apart ? point.pointA : middle) - a.position();
+      c.armB = (apart ? point.pointB : middle) - b.position();
       tangentBasis(manifold.normal, c.tangent[0], c.tangent[1]);
       const Vec3 directions[3] = {manifold.normal, c.tangent[0], c.tangent[1]};
       for (int row = 0; row < 3; ++row) {
@@ -193,8 +211,8 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
       c.normalMass =
           effectiveMass(inverseMassSum, bodyA.inverseInertia, bodyB.inverseInertia, c.armA, c.armB, manifold.normal);
       for (int t = 0; t < 2; ++t)
-        c.tangentMass[t] = effectiveMass(inverseMassSum, bodyA.inverseInertia, bodyB.inverseInertia, c.armA, c.armB,
-                                         c.tangent[t]);
+        c.tangentMass[t] =
+            effectiveMass(inverseMassSum, bodyA.inverseInertia, bodyB.inverseInertia, c.armA, c.armB, c.tangent[t]);
       const Vec3 relative = relativeVelocity(manifold, c);
       c.approachVelocity = relative.dot(manifold.normal);
       const double slidingSpeed = (relative - c.approachVelocity * manifold.normal).norm();
@@ -229,9 +247,6 @@ void SequentialImpulseSolver::loadPoses(const std::vector<RigidBody>& bodies) {
   }
 }
 
-
-
-
 void SequentialImpulseSolver::warmStart(const std::vector<ContactManifold>& manifolds) {
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
     const ContactManifold& manifold = manifolds[m];
@@ -245,6 +260,99 @@ void SequentialImpulseSolver::warmStart(const std::vector<ContactManifold>& mani
   }
 }
 
+void SequentialImpulseSolver::solveNormals(ContactManifold& manifold, std::size_t m, double substep,
+                                           const Softness& softness, bool useBias, bool reversed,
+                                           const SolverSettings& settings) {
+  for (int visit = 0; visit < manifold.pointCount; ++visit) {
+    const int p = reversed ? manifold.pointCount - 1 - visit : visit;
+    ManifoldPoint& point = manifold.points[p];
+    PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    const double gap = separation(manifold, point);
+    double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
+    if (gap > 0.0) {
+      bias = gap / substep;
+    } else if (useBias) {
+      bias = std::max(softness.biasRate * gap, -settings.maxPushSpeed);
+      massScale = softness.massScale;
+      impulseScale = softness.impulseScale;
+    }
+    const double normalVelocity = rowVelocity(manifold, c, manifold.normal, 0);
+    const double impulse = -c.normalMass * massScale * (normalVelocity + bias) - impulseScale * point.normalImpulse;
+    const double total = std::max(point.normalImpulse + impulse, 0.0);
+    applyRow(manifold, c, manifold.normal, 0, total - point.normalImpulse);
+    point.normalImpulse = total;
+    c.largestImpulse = std::max(c.largestImpulse, total);
+  }
+}
+
+// All points of the manifold at once: the impulses that bring every point
+// exactly to its gap (or, once touching, stop it) in this substep, from the
+// pseudo-inverse of the manifold's 4x4 normal mass matrix (four coplanar
+// points have only three independent motions, so the matrix is singular).
+// Two of the complementarity cases are tried: every point pushing, and none
+// (the usual answer once the warm-started stopping impulse must be taken
+// back). Anything else is left to the point-by-point solve.
+bool SequentialImpulseSolver::solveApproachTogether(ContactManifold& manifold, std::size_t m, double substep) {
+  const int count = manifold.pointCount;
+  Eigen::Vector4d target = Eigen::Vector4d::Zero(), impulse = Eigen::Vector4d::Zero();
+  for (int p = 0; p < count; ++p) {
+    const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    const double gap = std::max(separation(manifold, manifold.points[p]), 0.0);
+    target[p] = rowVelocity(manifold, c, manifold.normal, 0) + gap / substep;
+    impulse[p] = manifold.points[p].normalImpulse;
+  }
+  const auto anyNegative = [count](const Eigen::Vector4d& values) {
+    for (int p = 0; p < count; ++p)
+      if (values[p] < 0.0) return true;
+    return false;
+  };
+  Eigen::Vector4d change = -(approachInverse_[m] * target);
+  if (anyNegative(impulse + change)) {
+    // None pushing: removing every impulse must leave every point opening.
+    change = -impulse;
+    if (anyNegative(target + approachMass_[m] * change)) return false;
+  }
+  for (int p = 0; p < count; ++p) {
+    PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    ManifoldPoint& point = manifold.points[p];
+    applyRow(manifold, c, manifold.normal, 0, change[p]);
+    point.normalImpulse = std::max(point.normalImpulse + change[p], 0.0);
+    c.largestImpulse = std::max(c.largestImpulse, point.normalImpulse);
+  }
+  return true;
+}
+
+// Solving the points of a manifold one by one hands the first the whole
+// stop of an approaching body: a box arriving face first at 200 m/s would
+// leave spinning. Manifolds whose points are all still apart are solved
+// together instead (solveApproachTogether); there are few of them.
+void SequentialImpulseSolver::prepareApproaches(const std::vector<ContactManifold>& manifolds) {
+  approaching_.assign(manifolds.size(), false);
+  approachInverse_.resize(manifolds.size());
+  approachMass_.resize(manifolds.size());
+  for (std::size_t m = 0; m < manifolds.size(); ++m) {
+    const ContactManifold& manifold = manifolds[m];
+    if (manifold.pointCount < 2) continue;
+    bool apart = true;
+    for (int p = 0; p < manifold.pointCount; ++p) apart = apart && manifold.points[p].separation > 0.0;
+    if (!apart) continue;
+    const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
+    const Vec3& normal = manifold.normal;
+    const double linear = a.inverseMass * normal.cwiseProduct(a.linearMask).dot(normal) +
+                          b.inverseMass * normal.cwiseProduct(b.linearMask).dot(normal);
+    Eigen::Matrix4d mass = Eigen::Matrix4d::Zero();
+    for (int i = 0; i < manifold.pointCount; ++i)
+      for (int j = 0; j < manifold.pointCount; ++j) {
+        const PointConstraint& ci = constraints_[m * ContactManifold::maxPoints + i];
+        const PointConstraint& cj = constraints_[m * ContactManifold::maxPoints + j];
+        mass(i, j) = linear + ci.crossA[0].dot(cj.turnA[0]) + ci.crossB[0].dot(cj.turnB[0]);
+      }
+    approachMass_[m] = mass;
+    approachInverse_[m] = pseudoInverse(mass);
+    approaching_[m] = true;
+  }
+}
+
 // One sweep over every point: the normal constraint (soft push-out while
 // overlapping with `useBias`, exact closing of the gap while apart), then
 // Coulomb friction clamped to the cone |f| <= mu * normal impulse.
@@ -255,45 +363,31 @@ void SequentialImpulseSolver::solve(std::vector<ContactManifold>& manifolds, dou
                                     bool useBias, bool reversed, const SolverSettings& settings) {
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
     ContactManifold& manifold = manifolds[m];
-    for (int visit = 0; visit < manifold.pointCount; ++visit) {
-      const int p = reversed ? manifold.pointCount - 1 - visit : visit;
-      ManifoldPoint& point = manifold.points[p];
-      PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-      const double gap = separation(manifold, point);
-      double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
-      if (gap > 0.0) {
-        bias = gap / substep;
-      } else if (useBias) {
-        bias = std::max(softness.biasRate * gap, -settings.maxPushSpeed);
-        massScale = softness.massScale;
-        impulseScale = softness.impulseScale;
-      }
-      const double normalVelocity = rowVelocity(manifold, c, manifold.normal, 0);
-      const double impulse = -c.normalMass * massScale * (normalVelocity + bias) - impulseScale * point.normalImpulse;
-      const double total = std::max(point.normalImpulse + impulse, 0.0);
-      applyRow(manifold, c, manifold.normal, 0, total - point.normalImpulse);
-      point.normalImpulse = total;
-      c.largestImpulse = std::max(c.largestImpulse, total);
+    if (!(approaching_[m] && solveApproachTogether(manifold, m, substep)))
+      solveNormals(manifold, m, substep, softness, useBias, reversed, settings);
+    solveFriction(manifold, m, reversed);
+  }
+}
+
+void SequentialImpulseSolver::solveFriction(ContactManifold& manifold, std::size_t m, bool reversed) {
+  for (int visit = 0; visit < manifold.pointCount; ++visit) {
+    const int p = reversed ? manifold.pointCount - 1 - visit : visit;
+    ManifoldPoint& point = manifold.points[p];
+    const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    double tangentImpulse[2];
+    for (int t = 0; t < 2; ++t)
+      tangentImpulse[t] = point.tangentImpulse[t] - c.tangentMass[t] * rowVelocity(manifold, c, c.tangent[t], t + 1);
+    const double limit = c.friction * point.normalImpulse;
+    const double squared = tangentImpulse[0] * tangentImpulse[0] + tangentImpulse[1] * tangentImpulse[1];
+    if (squared > limit * limit && squared > 0.0) {
+      const double scale = limit / std::sqrt(squared);
+      tangentImpulse[0] *= scale;
+      tangentImpulse[1] *= scale;
     }
-    for (int visit = 0; visit < manifold.pointCount; ++visit) {
-      const int p = reversed ? manifold.pointCount - 1 - visit : visit;
-      ManifoldPoint& point = manifold.points[p];
-      const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-      double tangentImpulse[2];
-      for (int t = 0; t < 2; ++t)
-        tangentImpulse[t] = point.tangentImpulse[t] - c.tangentMass[t] * rowVelocity(manifold, c, c.tangent[t], t + 1);
-      const double limit = c.friction * point.normalImpulse;
-      const double squared = tangentImpulse[0] * tangentImpulse[0] + tangentImpulse[1] * tangentImpulse[1];
-      if (squared > limit * limit && squared > 0.0) {
-        const double scale = limit / std::sqrt(squared);
-        tangentImpulse[0] *= scale;
-        tangentImpulse[1] *= scale;
-      }
-      applyRow(manifold, c, c.tangent[0], 1, tangentImpulse[0] - point.tangentImpulse[0]);
-      applyRow(manifold, c, c.tangent[1], 2, tangentImpulse[1] - point.tangentImpulse[1]);
-      point.tangentImpulse[0] = tangentImpulse[0];
-      point.tangentImpulse[1] = tangentImpulse[1];
-    }
+    applyRow(manifold, c, c.tangent[0], 1, tangentImpulse[0] - point.tangentImpulse[0]);
+    applyRow(manifold, c, c.tangent[1], 2, tangentImpulse[1] - point.tangentImpulse[1]);
+    point.tangentImpulse[0] = tangentImpulse[0];
+    point.tangentImpulse[1] = tangentImpulse[1];
   }
 }
 

@@ -52,7 +52,7 @@ class SequentialImpulseSolver {
     double friction = 0;
     double approachVelocity = 0;  // normal velocity before the solve, for restitution
     double restitution = 0;
-    double largestImpulse = 0;    // did this point ever push (restitution needs it)
+    double largestImpulse = 0;  // did this point ever push (restitution needs it)
   };
   struct Softness {
     double biasRate = 0, massScale = 1, impulseScale = 0;
@@ -82,6 +82,11 @@ class SequentialImpulseSolver {
   void storeVelocities(std::vector<RigidBody>& bodies) const;
   void loadPoses(const std::vector<RigidBody>& bodies);
   void warmStart(const std::vector<ContactManifold>& manifolds);
+  void prepareApproaches(const std::vector<ContactManifold>& manifolds);
+  void solveNormals(ContactManifold& manifold, std::size_t m, double substep, const Softness& softness, bool useBias,
+                    bool reversed, const SolverSettings& settings);
+  bool solveApproachTogether(ContactManifold& manifold, std::size_t m, double substep);
+  void solveFriction(ContactManifold& manifold, std::size_t m, bool reversed);
   void solve(std::vector<ContactManifold>& manifolds, double substep, const Softness& softness, bool useBias,
              bool reversed, const SolverSettings& settings);
   void applyRestitution(std::vector<ContactManifold>& manifolds);
@@ -94,9 +99,12 @@ class SequentialImpulseSolver {
                 double impulse);
 
   std::vector<SolverBody> solverBodies_;
-  std::vector<std::uint32_t> active_;  // movable bodies that appear in a manifold
-  std::vector<PointConstraint> constraints_;  // maxPoints per manifold
-  double previousSubstep_ = 0.0;  // the substep the manifolds' impulses were found with
+  std::vector<std::uint32_t> active_;             // movable bodies that appear in a manifold
+  std::vector<PointConstraint> constraints_;      // maxPoints per manifold
+  std::vector<bool> approaching_;                 // per manifold: every point still apart at the start
+  std::vector<Eigen::Matrix4d> approachMass_;     // per manifold, where approaching_: normal rows' J M^-1 J^T
+  std::vector<Eigen::Matrix4d> approachInverse_;  // and its pseudo-inverse
+  double previousSubstep_ = 0.0;                  // the substep the manifolds' impulses were found with
 };
 
 }  // namespace physdbg

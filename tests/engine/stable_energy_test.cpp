@@ -140,9 +140,6 @@ void expectBulletStopsAtTheNearFace(BulletShape shape) {
 TEST(StableEnergy, SphereBulletStopsAtTheNearFace) { expectBulletStopsAtTheNearFace(BulletShape::Sphere); }
 
 TEST(StableEnergy, BoxBulletStopsAtTheNearFace) {
-  GTEST_SKIP() << "engine: no pass-through, but the speculative face manifold solves its four corners one by one, "
-                  "so the first corner takes most of the stopping impulse: the box spins up to 4.9 rad/s and "
-                  "rebounds at 0.16 m/s with restitution 0 (sequential_impulse_solver.cpp solve order)";
   expectBulletStopsAtTheNearFace(BulletShape::Box);
 }
 

@@ -86,17 +86,13 @@ void expectMassStackStands(const std::vector<double>& masses) {
 // effective mass, so under a supported mass M it settles at a depth of
 // (M / m_eff) g / omega^2. The solver raises omega (and the substeps) until
 // that depth is solver.restingOverlap for the most loaded contact.
-TEST(StableStacking, HundredKilogramBoxOnOneKilogramBoxStands) {
-  expectMassStackStands({1.0, 100.0});
-}
+TEST(StableStacking, HundredKilogramBoxOnOneKilogramBoxStands) { expectMassStackStands({1.0, 100.0}); }
 
 TEST(StableStacking, StackAlternatingTenthAndTenKilogramsStands) {
   expectMassStackStands({0.1, 10.0, 0.1, 10.0, 0.1, 10.0});
 }
 
-TEST(StableStacking, HeavyBottomAlternatingStackStands) {
-  expectMassStackStands({10.0, 0.1, 10.0, 0.1, 10.0, 0.1});
-}
+TEST(StableStacking, HeavyBottomAlternatingStackStands) { expectMassStackStands({10.0, 0.1, 10.0, 0.1, 10.0, 0.1}); }
 
 // The upper box starts sunk 25 cm into the lower one. Pushing it out must not
 // create more kinetic energy than gravity gives a box falling through that
@@ -181,7 +177,8 @@ TEST(StableStacking, WithFixedSubstepsAHeavyLoadSinksAsFarAsTheSpringFormulaSays
   reportFigure("settled overlap, 8 substeps fixed (m)", overlap);
   EXPECT_EQ(world.lastStepStats().substeps, 8);
   EXPECT_EQ(world.lastStepStats().contactHertz, 60.0);
-  EXPECT_NEAR(overlap, expectedOverlapAt(60.0), 0.05 * expectedOverlapAt(60.0));  // 7.0 mm
+  // 7.0 mm
+  EXPECT_NEAR(overlap, expectedOverlapAt(60.0), 0.05 * expectedOverlapAt(60.0));
 }
 
 TEST(StableStacking, AHeavyLoadGetsAStifferContactAndSettlesAtTheTargetOverlap) {
