@@ -14,24 +14,38 @@ bool hasImpulse(const ContactManifold& manifold) {
 }
 
 struct Support {
-  std::size_t manifold;
+  std::uint32_t supported;
   std::uint32_t supporter;
+  std::size_t manifold;
   double cosine;  // of the angle between the normal and up
 };
 
-// supports[body]: the manifolds on which body rests.
-std::vector<std::vector<Support>> findSupports(std::size_t bodyCount, const std::vector<bool>& movable,
-                                               const std::vector<ContactManifold>& manifolds, const Vec3& up) {
-  std::vector<std::vector<Support>> supports(bodyCount);
+// Every manifold on which a movable body rests, grouped by that body
+// (counting sort, so one flat array serves all bodies).
+struct SupportTable {
+  std::vector<Support> supports;
+  std::vector<std::uint32_t> first;  // supports of body i: [first[i], first[i + 1])
+};
+
+SupportTable findSupports(std::size_t bodyCount, const std::vector<bool>& movable,
+                          const std::vector<ContactManifold>& manifolds, const Vec3& up) {
+  std::vector<Support> found;
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
     const ContactManifold& manifold = manifolds[m];
     const double cosine = manifold.normal.dot(up);  // the normal points from a to b
     if (cosine >= supportCosine && movable[manifold.b])
-      supports[manifold.b].push_back({m, manifold.a, cosine});
+      found.push_back({manifold.b, manifold.a, m, cosine});
     else if (cosine <= -supportCosine && movable[manifold.a])
-      supports[manifold.a].push_back({m, manifold.b, -cosine});
+      found.push_back({manifold.a, manifold.b, m, -cosine});
   }
-  return supports;
+  SupportTable table;
+  table.first.assign(bodyCount + 1, 0);
+  for (const Support& support : found) ++table.first[support.supported + 1];
+  for (std::size_t i = 0; i < bodyCount; ++i) table.first[i + 1] += table.first[i];
+  table.supports.resize(found.size());
+  std::vector<std::uint32_t> next(table.first.begin(), table.first.end() - 1);
+  for (const Support& support : found) table.supports[next[support.supported]++] = support;
+  return table;
 }
 
 }  // namespace
@@ -40,18 +54,20 @@ std::vector<double> restingLoads(const std::vector<RigidBody>& bodies, const std
                                  const std::vector<ContactManifold>& manifolds, const Vec3& up) {
   std::vector<double> manifoldLoad(manifolds.size(), 0.0);
   if (manifolds.empty()) return manifoldLoad;
-  const std::vector<std::vector<Support>> supports = findSupports(bodies.size(), movable, manifolds, up);
+  const SupportTable table = findSupports(bodies.size(), movable, manifolds, up);
   std::vector<std::uint32_t> order;
   for (std::uint32_t id = 0; id < bodies.size(); ++id)
-    if (!supports[id].empty()) order.push_back(id);
+    if (table.first[id + 1] > table.first[id]) order.push_back(id);
   // Ties keep id order, so the walk is deterministic.
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) {
     return bodies[x].position().dot(up) > bodies[y].position().dot(up);
   });
   std::vector<double> carried(bodies.size(), 0.0);
   for (std::uint32_t id : order) {
-    const double share = (carried[id] + bodies[id].mass()) / static_cast<double>(supports[id].size());
-    for (const Support& support : supports[id]) {
+    const std::uint32_t begin = table.first[id], end = table.first[id + 1];
+    const double share = (carried[id] + bodies[id].mass()) / static_cast<double>(end - begin);
+    for (std::uint32_t s = begin; s < end; ++s) {
+      const Support& support = table.supports[s];
       manifoldLoad[support.manifold] += share / support.cosine;
       if (movable[support.supporter]) carried[support.supporter] += share;
     }
