@@ -104,6 +104,8 @@ int runSimulate(const std::vector<std::string>& args) {
               stats.awakeBodies, stats.lockedBodies, stats.sleepingBodies, stats.candidatePairs, stats.contacts,
               stats.manifoldPoints, stats.largestPenetration, stats.narrowPhase.fastPath, stats.narrowPhase.gjk,
               stats.narrowPhase.epa);
+  if (stats.substeps > 0)
+    std::printf("solver: %d substeps, contacts at %.4g Hz\n", stats.substeps, stats.contactHertz);
   if (parsed->has("--hash")) std::printf("state hash %s\n", hexHash(worldStateHash(world)).c_str());
   for (const NumericalFault& fault : world.numericalFaults()) {
     std::fprintf(stderr, "physdbg simulate: body %u: %s at step %d; body frozen\n", fault.body, fault.what.c_str(),

@@ -1,6 +1,7 @@
 #include "scenes/stacking_scenes.h"
 
 #include "engine/colliders/box_collider.h"
+#include "scenes/stability_scenes.h"
 
 namespace physdbg {
 namespace {
@@ -55,6 +56,12 @@ std::vector<BuiltinScene> stackingScenes() {
   return {
       {"stack", "10 unit boxes stacked on a floor", [] { return stackScene(10); }},
       {"pyramid", "pyramid of 210 unit boxes (20 at the base)", [] { return pyramidScene(20); }},
+      {"mass_stack", "6 unit boxes alternating 0.1 kg and 10 kg (the solver stiffens the loaded contacts)",
+       [] {
+         SceneDescription scene = massStackScene({0.1, 10.0, 0.1, 10.0, 0.1, 10.0});
+         scene.name = "mass_stack";
+         return scene;
+       }},
   };
 }
 
