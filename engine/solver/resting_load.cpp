@@ -28,10 +28,12 @@ struct SupportTable {
 };
 
 SupportTable findSupports(std::size_t bodyCount, const std::vector<bool>& movable,
-                          const std::vector<ContactManifold>& manifolds, const Vec3& up) {
+                          const std::vector<ContactManifold>& manifolds, const std::vector<double>& touching,
+                          const Vec3& up) {
   std::vector<Support> found;
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
     const ContactManifold& manifold = manifolds[m];
+    if (touchingPoints(manifold, touching[m]) == 0) continue;
     const double cosine = manifold.normal.dot(up);  // the normal points from a to b
     if (cosine >= supportCosine && movable[manifold.b])
       found.push_back({manifold.b, manifold.a, m, cosine});
@@ -51,10 +53,11 @@ SupportTable findSupports(std::size_t bodyCount, const std::vector<bool>& movabl
 }  // namespace
 
 std::vector<double> restingLoads(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-                                 const std::vector<ContactManifold>& manifolds, const Vec3& up) {
+                                 const std::vector<ContactManifold>& manifolds, const std::vector<double>& touching,
+                                 const Vec3& up) {
   std::vector<double> manifoldLoad(manifolds.size(), 0.0);
   if (manifolds.empty()) return manifoldLoad;
-  const SupportTable table = findSupports(bodies.size(), movable, manifolds, up);
+  const SupportTable table = findSupports(bodies.size(), movable, manifolds, touching, up);
   std::vector<std::uint32_t> order;
   for (std::uint32_t id = 0; id < bodies.size(); ++id)
     if (table.first[id + 1] > table.first[id]) order.push_back(id);
@@ -81,16 +84,16 @@ int touchingPoints(const ContactManifold& manifold, double touching) {
   return count;
 }
 
-void seedNewContacts(std::vector<ContactManifold>& manifolds, const std::vector<double>& loads, double gravity,
-                     double h, double touching) {
+void seedNewContacts(std::vector<ContactManifold>& manifolds, const std::vector<double>& loads,
+                     const std::vector<double>& touching, double gravity, double h) {
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
     ContactManifold& manifold = manifolds[m];
     if (loads[m] == 0.0 || hasImpulse(manifold)) continue;
-    const int count = touchingPoints(manifold, touching);
+    const int count = touchingPoints(manifold, touching[m]);
     if (count == 0) continue;
     const double impulse = loads[m] * gravity * h / count;
     for (int p = 0; p < manifold.pointCount; ++p)
-      if (manifold.points[p].separation <= touching) manifold.points[p].normalImpulse = impulse;
+      if (manifold.points[p].separation <= touching[m]) manifold.points[p].normalImpulse = impulse;
   }
 }
 

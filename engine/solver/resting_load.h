@@ -22,20 +22,22 @@
 namespace physdbg {
 
 // Per manifold, the mass (kg) it supports along its normal. A manifold
-// supports the upper body when its normal is within 45 degrees of `up`. Each
+// supports the upper body when its normal is within 45 degrees of `up` and
+// one of its points touches (separation at most touching[manifold]). Each
 // movable body, highest first, passes its own mass plus what rests on it to
 // its supports, split evenly; a movable supporter passes it on in turn.
 // Manifolds that hold nothing up (walls, sides, bodies in free flight) get 0.
 std::vector<double> restingLoads(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-                                 const std::vector<ContactManifold>& manifolds, const Vec3& up);
+                                 const std::vector<ContactManifold>& manifolds, const std::vector<double>& touching,
+                                 const Vec3& up);
 
-// Points that touch (separation at most `touching`) share a manifold's load.
+// Points that touch share a manifold's load.
 int touchingPoints(const ContactManifold& manifold, double touching);
 
 // Manifolds with no impulse at all (new this step) that hold a load get it
 // as their normal impulse for one substep of length h, shared by their
 // touching points. Manifolds that carry impulse from the last step keep it.
-void seedNewContacts(std::vector<ContactManifold>& manifolds, const std::vector<double>& loads, double gravity,
-                     double h, double touching);
+void seedNewContacts(std::vector<ContactManifold>& manifolds, const std::vector<double>& loads,
+                     const std::vector<double>& touching, double gravity, double h);
 
 }  // namespace physdbg

@@ -73,16 +73,21 @@ inline void SequentialImpulseSolver::applyRow(const ContactManifold& manifold, c
 SolverStepReport SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                                std::vector<ContactManifold>& manifolds, double dt,
                                                const SolverSettings& settings, const Vec3& gravity) {
-  const double g = gravity.norm();
-  const std::vector<double> loads =
-      g > 0.0 ? restingLoads(bodies, movable, manifolds, -gravity / g) : std::vector<double>(manifolds.size(), 0.0);
   prepare(bodies, movable, manifolds, settings);
   prepareApproaches(manifolds);
+  // Touching, for holding weight: within the slop, or within a tenth of the
+  // smaller body for bodies not much bigger than the slop.
+  touching_.resize(manifolds.size());
+  for (std::size_t m = 0; m < manifolds.size(); ++m)
+    touching_[m] = std::min(settings.linearSlop, 0.1 * bodySize(manifolds[m]));
+  const double g = gravity.norm();
+  const std::vector<double> loads = g > 0.0 ? restingLoads(bodies, movable, manifolds, touching_, -gravity / g)
+                                            : std::vector<double>(manifolds.size(), 0.0);
   const Stiffness stiffness = chooseStiffness(manifolds, loads, g, dt, settings);
   const double h = dt / stiffness.substeps;
   if (settings.warmStarting) {
     rescaleWarmStart(manifolds, h);
-    seedNewContacts(manifolds, loads, g, h, settings.linearSlop);
+    seedNewContacts(manifolds, loads, touching_, g, h);
   }
   Softness softness;
   if (stiffness.hertz > 0.0) {
@@ -125,22 +130,31 @@ SequentialImpulseSolver::Stiffness SequentialImpulseSolver::chooseStiffness(
   const int most = std::max(settings.maxSubsteps, fewest);
   double hertz = settings.contactHertz;
   if (hertz > 0.0 && settings.restingOverlap > 0.0 && most > fewest) {
-    double loadRatio = 0.0;  // largest supported mass per point / effective mass of the point
+    // Largest (supported mass / effective mass) / allowed overlap, per point.
+    double demand = 0.0;
     for (std::size_t m = 0; m < manifolds.size(); ++m) {
       if (loads[m] == 0.0) continue;
-      const int touching = touchingPoints(manifolds[m], settings.linearSlop);
-      for (int p = 0; p < manifolds[m].pointCount && touching > 0; ++p) {
+      const int touching = touchingPoints(manifolds[m], touching_[m]);
+      if (touching == 0) continue;
+      const double allowed = std::min(settings.restingOverlap, settings.relativeRestingOverlap * bodySize(manifolds[m]));
+      for (int p = 0; p < manifolds[m].pointCount; ++p) {
         const double mass = constraints_[m * ContactManifold::maxPoints + p].normalMass;
-        if (mass > 0.0) loadRatio = std::max(loadRatio, loads[m] / touching / mass);
+        if (mass > 0.0) demand = std::max(demand, loads[m] / touching / mass / allowed);
       }
     }
-    const double needed = std::sqrt(loadRatio * gravity / settings.restingOverlap) / (2.0 * std::numbers::pi);
-    hertz = std::max(hertz, needed);
+    hertz = std::max(hertz, std::sqrt(demand * gravity) / (2.0 * std::numbers::pi));
   }
   // Substeps that make `hertz` a quarter of the substep rate, within bounds.
   const double wanted = std::ceil(4.0 * hertz * dt - 1e-9);
   const int substeps = static_cast<int>(std::clamp(wanted, static_cast<double>(fewest), static_cast<double>(most)));
   return {substeps, std::min(hertz, 0.25 * substeps / dt)};
+}
+
+// The middle of a body's three extents: a cube's edge, a plate's width, a
+// rod's thickness. Of the two bodies, the smaller movable one.
+double SequentialImpulseSolver::bodySize(const ContactManifold& manifold) const {
+  const double a = solverBodies_[manifold.a].size, b = solverBodies_[manifold.b].size;
+  return std::min(solverBodies_[manifold.a].inverseMass > 0.0 ? a : b, solverBodies_[manifold.b].inverseMass > 0.0 ? b : a);
 }
 
 // Impulses carried from the last step were found over its substep; a step
@@ -179,6 +193,9 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
       body.linearVelocity = source.linearVelocity();
       body.angularVelocity = source.angularVelocity();
       body.position = source.position();
+      Vec3 extents = source.collider().localBounds().halfExtents() * 2.0;
+      std::sort(extents.data(), extents.data() + 3);
+      body.size = extents[1];
       body.rotation = source.orientation().toRotationMatrix();
       if (movable[id]) active_.push_back(id);
     }

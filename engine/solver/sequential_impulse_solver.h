@@ -67,6 +67,7 @@ class SequentialImpulseSolver {
     Mat3 inverseInertia = Mat3::Zero();
     Vec3 linearMask = Vec3::Ones(), angularMask = Vec3::Ones();  // 0 on locked axes
     double inverseMass = 0;
+    double size = 0;  // middle extent of the collider's box, m
   };
 
   struct Stiffness {
@@ -75,6 +76,7 @@ class SequentialImpulseSolver {
   };
   Stiffness chooseStiffness(const std::vector<ContactManifold>& manifolds, const std::vector<double>& loads,
                             double gravity, double dt, const SolverSettings& settings) const;
+  double bodySize(const ContactManifold& manifold) const;
   void rescaleWarmStart(std::vector<ContactManifold>& manifolds, double substep);
   void prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                std::vector<ContactManifold>& manifolds, const SolverSettings& settings);
@@ -101,6 +103,7 @@ class SequentialImpulseSolver {
   std::vector<SolverBody> solverBodies_;
   std::vector<std::uint32_t> active_;             // movable bodies that appear in a manifold
   std::vector<PointConstraint> constraints_;      // maxPoints per manifold
+  std::vector<double> touching_;                  // per manifold: largest separation that holds weight, m
   std::vector<bool> approaching_;                 // per manifold: every point still apart at the start
   std::vector<Eigen::Matrix4d> approachMass_;     // per manifold, where approaching_: normal rows' J M^-1 J^T
   std::vector<Eigen::Matrix4d> approachInverse_;  // and its pseudo-inverse

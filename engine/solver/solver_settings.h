@@ -28,12 +28,15 @@ struct SolverSettings {
   double dampingRatio = 5.0;
   double maxPushSpeed = 3.0;  // m/s
   // A soft contact under load settles at (load / effective mass) g / omega^2
-  // (resting_load.h). When the most loaded contact would settle deeper than
-  // this (m), the step raises the contact frequency to match and takes the
-  // substeps that frequency needs (a quarter of the substep rate), up to
-  // maxSubsteps. Ordinary piles stay at `substeps`; a 10 kg box on a 0.1 kg
-  // box takes 12. maxSubsteps = substeps turns this off.
+  // (resting_load.h). When a contact would settle deeper than restingOverlap
+  // (m), or than relativeRestingOverlap times the size of the smaller body
+  // (the middle of its three extents), the step raises the contact frequency
+  // to match and takes the substeps that frequency needs (a quarter of the
+  // substep rate), up to maxSubsteps. Unit boxes in stacks and piles stay at
+  // `substeps`; 10 kg on 0.1 kg takes 12, and so do 5 mm cubes.
+  // maxSubsteps = substeps turns this off.
   double restingOverlap = 0.0025;
+  double relativeRestingOverlap = 0.02;
   int maxSubsteps = 32;
   // Approach speeds below this (m/s) do not bounce.
   double restitutionThreshold = 0.2;
