@@ -57,10 +57,12 @@ RigidBody::RigidBody(const BodyDefinition& definition)
   localInertia_ = collider_->unitInertia() * mass_;
   localInverseInertia_ = localInertia_.inverse();
   if (!localInverseInertia_.allFinite()) throw std::invalid_argument("collider has a singular inertia tensor");
+  isotropic_ = localInertia_ == localInertia_(0, 0) * Mat3::Identity();
   applyLocks();
 }
 
 Mat3 RigidBody::worldInverseInertia() const {
+  if (isotropic_) return localInverseInertia_;  // the same about every axis
   const Mat3 rotation = orientation_.toRotationMatrix();
   return rotation * localInverseInertia_ * rotation.transpose();
 }
@@ -141,12 +143,13 @@ void RigidBody::integrateVelocity(double dt) {
 // inverse (angle 2 atan(dt |wm| / 2) about wm) keeps the world angular momentum
 // R Pi exactly too. A spin about a principal axis (w x Iw = 0) is unchanged.
 void RigidBody::integrateAngularVelocity(double dt) {
-  const Vec3 start = orientation_.conjugate() * angularVelocity_;
-  const Mat3& inertia = localInertia_;
   // With a rotation lock the body is constrained, not free: the torque-free
-  // equations do not apply, and the locks alone decide the spin.
+  // equations do not apply, and the locks alone decide the spin. An
+  // isotropic body (cube, sphere) has w x Iw = 0 for every w.
   const bool rotationLocked = lockRotation_[0] || lockRotation_[1] || lockRotation_[2];
-  if (rotationLocked || start.cross(inertia * start).squaredNorm() == 0.0) {
+  const Vec3 start = isotropic_ || rotationLocked ? Vec3::Zero() : Vec3(orientation_.conjugate() * angularVelocity_);
+  const Mat3& inertia = localInertia_;
+  if (start.cross(inertia * start).squaredNorm() == 0.0) {
     orientationSpin_ = angularVelocity_;
     spinAfterGyroscopicStep_ = angularVelocity_;
     return;

@@ -113,6 +113,7 @@ class RigidBody {
   bool useGravity_;
   double mass_, inverseMass_;
   Mat3 localInertia_, localInverseInertia_;
+  bool isotropic_ = false;  // inertia c * identity: no gyroscopic term, world inertia = local
   double linearDrag_, angularDrag_;
   Material material_;
   std::array<bool, 3> lockTranslation_, lockRotation_;
