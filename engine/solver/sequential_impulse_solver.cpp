@@ -97,6 +97,7 @@ SolverStepReport SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, c
     const double a3 = 1.0 / (1.0 + a2);
     softness = {omega / a1, a2 * a3, a3};
   }
+  measureGaps(manifolds);
   const Softness rigid;
   for (int substep = 0; substep < stiffness.substeps; ++substep) {
     for (std::size_t i = 0; i < bodies.size(); ++i)
@@ -109,6 +110,7 @@ SolverStepReport SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, c
     for (std::size_t i = 0; i < bodies.size(); ++i)
       if (movable[i]) bodies[i].integratePosition(h);
     loadPoses(bodies);
+    measureGaps(manifolds);
     loadVelocities(bodies);
     solve(manifolds, h, rigid, false, substep % 2 == 0, settings);
     storeVelocities(bodies);
@@ -264,6 +266,16 @@ void SequentialImpulseSolver::loadPoses(const std::vector<RigidBody>& bodies) {
   }
 }
 
+// Poses change only when positions are integrated, once per substep, so the
+// gaps are measured then and shared by every sweep until the next move.
+void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& manifolds) {
+  for (std::size_t m = 0; m < manifolds.size(); ++m) {
+    const ContactManifold& manifold = manifolds[m];
+    for (int p = 0; p < manifold.pointCount; ++p)
+      constraints_[m * ContactManifold::maxPoints + p].gap = separation(manifold, manifold.points[p]);
+  }
+}
+
 void SequentialImpulseSolver::warmStart(const std::vector<ContactManifold>& manifolds) {
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
     const ContactManifold& manifold = manifolds[m];
@@ -284,7 +296,7 @@ void SequentialImpulseSolver::solveNormals(ContactManifold& manifold, std::size_
     const int p = reversed ? manifold.pointCount - 1 - visit : visit;
     ManifoldPoint& point = manifold.points[p];
     PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-    const double gap = separation(manifold, point);
+    const double gap = c.gap;
     double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
     if (gap > 0.0) {
       bias = gap / substep;
@@ -314,7 +326,7 @@ bool SequentialImpulseSolver::solveApproachTogether(ContactManifold& manifold, s
   Eigen::Vector4d target = Eigen::Vector4d::Zero(), impulse = Eigen::Vector4d::Zero();
   for (int p = 0; p < count; ++p) {
     const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-    const double gap = std::max(separation(manifold, manifold.points[p]), 0.0);
+    const double gap = std::max(c.gap, 0.0);
     target[p] = rowVelocity(manifold, c, manifold.normal, 0) + gap / substep;
     impulse[p] = manifold.points[p].normalImpulse;
   }

@@ -53,6 +53,7 @@ class SequentialImpulseSolver {
     double approachVelocity = 0;  // normal velocity before the solve, for restitution
     double restitution = 0;
     double largestImpulse = 0;  // did this point ever push (restitution needs it)
+    double gap = 0;             // separation at the current poses (measureGaps)
   };
   struct Softness {
     double biasRate = 0, massScale = 1, impulseScale = 0;
@@ -83,6 +84,7 @@ class SequentialImpulseSolver {
   void loadVelocities(const std::vector<RigidBody>& bodies);
   void storeVelocities(std::vector<RigidBody>& bodies) const;
   void loadPoses(const std::vector<RigidBody>& bodies);
+  void measureGaps(const std::vector<ContactManifold>& manifolds);
   void warmStart(const std::vector<ContactManifold>& manifolds);
   void prepareApproaches(const std::vector<ContactManifold>& manifolds);
   void solveNormals(ContactManifold& manifold, std::size_t m, double substep, const Softness& softness, bool useBias,
