@@ -8,12 +8,12 @@
 #include <iostream>
 
 #include "cli/arguments.h"
-#include "cli/tree_view.h"
 #include "cli/commands.h"
 #include "cli/line_plot.h"
 #include "cli/output_folder.h"
 #include "cli/pixel_canvas.h"
 #include "cli/tree_diagram.h"
+#include "cli/tree_view.h"
 #include "cli/view_options.h"
 #include "render/renderer.h"
 #include "scenes/scene.h"
@@ -44,6 +44,18 @@ struct Panels {
   const TreeViewSettings& settings;
 };
 
+// Internal nodes whose boxes a rotation changed: the new parents of the two
+// swapped subtrees, except the pivot (its box never changes). One for a
+// child-grandchild swap, two for a grandchild-grandchild swap.
+std::vector<int> reshapedBy(const RotationEvent& rotation, const TreeSnapshot& after) {
+  std::vector<int> nodes;
+  for (int moved : {rotation.first, rotation.second}) {
+    const int parent = after.nodes[moved].parent;
+    if (parent != rotation.node) nodes.push_back(parent);
+  }
+  return nodes;
+}
+
 TreeHighlight highlightOf(const TreeEvent& event) {
   TreeHighlight highlight;
   highlight.newLeaf = event.leaf;
@@ -51,7 +63,7 @@ TreeHighlight highlightOf(const TreeEvent& event) {
     highlight.movedDown.push_back(rotation.first);
     highlight.movedUp.push_back(rotation.second);
     highlight.pivots.push_back(rotation.node);
-    highlight.reshaped.push_back(event.after.nodes[rotation.first].parent);
+    for (int node : reshapedBy(rotation, event.after)) highlight.reshaped.push_back(node);
   }
   return highlight;
 }
@@ -66,23 +78,26 @@ void addLegend(const TreeEvent& event, bool after, int height, dd::Frame& frame)
   const std::string title = event.what + (after ? ": AFTER " : ": BEFORE ") + std::to_string(event.rotations.size()) +
                             (event.rotations.size() == 1 ? " rotation" : " rotations");
   frame.texts.push_back({10, 8, 2, title, {1, 1, 1, 1}});
-  frame.texts.push_back({10, 30, 1.5f, stateLine("before:", event.before), after ? dd::Color{0.7f, 0.7f, 0.7f, 1}
-                                                                                 : dd::Color{1, 1, 1, 1}});
-  frame.texts.push_back({10, 46, 1.5f, stateLine("after: ", event.after), after ? dd::Color{1, 1, 1, 1}
-                                                                                : dd::Color{0.7f, 0.7f, 0.7f, 1}});
+  frame.texts.push_back({10, 30, 1.5f, stateLine("before:", event.before),
+                         after ? dd::Color{0.7f, 0.7f, 0.7f, 1} : dd::Color{1, 1, 1, 1}});
+  frame.texts.push_back({10, 46, 1.5f, stateLine("after: ", event.after),
+                         after ? dd::Color{1, 1, 1, 1} : dd::Color{0.7f, 0.7f, 0.7f, 1}});
   float y = 62;
   for (const RotationEvent& rotation : event.rotations) {
-    const int node = event.after.nodes[rotation.first].parent;
-    char line[160];
-    std::snprintf(line, sizeof line, "orange box (node %d) area %.3g -> %.3g", node,
-                  event.before.nodes[node].box.surfaceArea(), event.after.nodes[node].box.surfaceArea());
-    frame.texts.push_back({10, y, 1.5f, line, treecolors::reshaped});
-    y += 14;
+    for (int node : reshapedBy(rotation, event.after)) {
+      char line[160];
+      std::snprintf(line, sizeof line, "orange box (node %d) area %.3g -> %.3g", node,
+                    event.before.nodes[node].box.surfaceArea(), event.after.nodes[node].box.surfaceArea());
+      frame.texts.push_back({10, y, 1.5f, line, treecolors::reshaped});
+      y += 14;
+    }
   }
   y = static_cast<float>(height - 20);
   float x = 10;
-  for (const auto& [text, color] : {std::pair{"moved down", treecolors::movedDown}, {"moved up", treecolors::movedUp},
-                                    {"pivot", treecolors::pivot}, {"shrunk box", treecolors::reshaped},
+  for (const auto& [text, color] : {std::pair{"moved down", treecolors::movedDown},
+                                    {"moved up", treecolors::movedUp},
+                                    {"pivot", treecolors::pivot},
+                                    {"changed box", treecolors::reshaped},
                                     {"new leaf", treecolors::newLeaf},
                                     {"depth: blue..red", depthColor(0, 1)}}) {
     frame.texts.push_back({x, y, 1.5f, text, color});
@@ -150,10 +165,9 @@ void writePlot(const std::vector<Aabb>& boxes, const TreeViewSettings& settings,
   const int width = settings.width, height = settings.height;
   dd::Frame sarFrame, heightFrame;
   drawLinePlot("surface area ratio (lower is better)", "insertions",
-               {{"rotations", onColor, on.sar}, {"no rotations", offColor, off.sar}}, {0, 0, double(width), double(height)},
-               sarFrame);
-  drawLinePlot("tree height", "insertions",
-               {{"rotations", onColor, on.height}, {"no rotations", offColor, off.height}},
+               {{"rotations", onColor, on.sar}, {"no rotations", offColor, off.sar}},
+               {0, 0, double(width), double(height)}, sarFrame);
+  drawLinePlot("tree height", "insertions", {{"rotations", onColor, on.height}, {"no rotations", offColor, off.height}},
                {0, 0, double(width), double(height)}, heightFrame);
   const render::Camera camera = pixelCamera(width, height);
   render::writePng(path, sideBySide(renderer.render(sarFrame, camera), renderer.render(heightFrame, camera)));
@@ -190,20 +204,26 @@ std::vector<TreeEvent> collectEvents(const SceneDescription& scene, const TreeVi
   std::vector<int> proxies;
   for (std::size_t i = 0; i < initialBoxes.size(); ++i) {
     const std::string what = "insertion " + std::to_string(i + 1) + " (body " + std::to_string(i) + ")";
-    observe(tree, what, [&] {
-      proxies.push_back(tree.createProxy(initialBoxes[i], static_cast<std::uint32_t>(i)));
-      return proxies.back();
-    }, events);
+    observe(
+        tree, what,
+        [&] {
+          proxies.push_back(tree.createProxy(initialBoxes[i], static_cast<std::uint32_t>(i)));
+          return proxies.back();
+        },
+        events);
   }
   for (int step = 1; step <= settings.steps; ++step) {
     world.step();
     const std::vector<Aabb> boxes = bodyBoxes(world);
     for (std::size_t i = 0; i < boxes.size(); ++i) {
       const std::string what = "step " + std::to_string(step) + " reinsertion (body " + std::to_string(i) + ")";
-      observe(tree, what, [&] {
-        tree.moveProxy(proxies[i], boxes[i]);
-        return proxies[i];
-      }, events);
+      observe(
+          tree, what,
+          [&] {
+            tree.moveProxy(proxies[i], boxes[i]);
+            return proxies[i];
+          },
+          events);
     }
   }
   return events;
@@ -274,9 +294,12 @@ int runTree(const std::vector<std::string>& args) {
       render::writePng((fs::path(settings.outputDirectory) / name).string(),
                        renderEventFrame(panels, event, after, camera));
     }
-    std::printf("event %03d: %s, %zu rotations, SAR %.3f -> %.3f, height %d -> %d\n", i, event.what.c_str(),
-                event.rotations.size(), event.before.surfaceAreaRatio(), event.after.surfaceAreaRatio(),
-                event.before.height(), event.after.height());
+    int grandchildSwaps = 0;
+    for (const RotationEvent& rotation : event.rotations)
+      grandchildSwaps += reshapedBy(rotation, event.after).size() == 2 ? 1 : 0;
+    std::printf("event %03d: %s, %zu rotations (%d grandchild swaps), SAR %.3f -> %.3f, height %d -> %d\n", i,
+                event.what.c_str(), event.rotations.size(), grandchildSwaps, event.before.surfaceAreaRatio(),
+                event.after.surfaceAreaRatio(), event.before.height(), event.after.height());
   }
   writePlot(boxes, settings, renderer, (fs::path(settings.outputDirectory) / "sar_height.png").string());
   std::printf("%zu rotating events, wrote %d frame pairs and sar_height.png to %s\n", events.size(), written,

@@ -16,7 +16,8 @@ inline constexpr debugdraw::Color movedDown{1.0f, 0.2f, 1.0f, 1.0f};  // subtree
 inline constexpr debugdraw::Color movedUp{0.1f, 1.0f, 1.0f, 1.0f};    // subtree that moved up: cyan
 inline constexpr debugdraw::Color pivot{1.0f, 1.0f, 1.0f, 1.0f};      // node whose children were swapped
 inline constexpr debugdraw::Color newLeaf{1.0f, 0.85f, 0.1f, 1.0f};   // the leaf just inserted: yellow
-inline constexpr debugdraw::Color reshaped{1.0f, 0.5f, 0.0f, 1.0f};   // node whose box the swap changed: orange
+// Nodes whose box a swap changed (their total area shrinks): orange.
+inline constexpr debugdraw::Color reshaped{1.0f, 0.5f, 0.0f, 1.0f};
 }  // namespace treecolors
 
 // Depth 0 blue through green to red at `maxDepth`.
@@ -24,7 +25,7 @@ debugdraw::Color depthColor(int depth, int maxDepth);
 
 struct TreeHighlight {
   std::vector<int> movedDown, movedUp, pivots;  // subtree roots / pivot nodes
-  std::vector<int> reshaped;                    // nodes whose box a swap changed (shrank)
+  std::vector<int> reshaped;                    // nodes whose box a swap changed (their total shrank)
   int newLeaf = DynamicAabbTree::nullNode;
 };
 

@@ -18,8 +18,7 @@ DynamicAabbTree::DynamicAabbTree(const DynamicAabbTreeOptions& options) : option
 
 void DynamicAabbTree::requireValidBox(const Aabb& box, const char* operation) {
   if (!box.isValid()) {
-    throw std::invalid_argument(std::string("DynamicAabbTree::") + operation +
-                                ": box must be finite with min <= max");
+    throw std::invalid_argument(std::string("DynamicAabbTree::") + operation + ": box must be finite with min <= max");
   }
 }
 
@@ -174,7 +173,12 @@ void DynamicAabbTree::refitNode(int node) {
 void DynamicAabbTree::refitAncestors(int node) {
   while (node != nullNode) {
     refitNode(node);
-    if (options_.rotations) rotate(node);
+    // A rotation hands both children new subtrees; each gets one more try.
+    if (options_.rotations && rotate(node)) {
+      for (int child : {nodes_[node].child1, nodes_[node].child2})
+        if (nodes_[child].child1 != nullNode) rotate(child);
+      refitNode(node);  // same box; the height may have changed below
+    }
     node = nodes_[node].parent;
   }
 }

@@ -32,7 +32,7 @@ struct RotationEvent {
   int second = -1;
   Aabb firstBox;   // the two swapped subtrees' boxes, for drawing
   Aabb secondBox;
-  double areaBefore = 0.0;  // area of the one node whose box the swap changes
+  double areaBefore = 0.0;  // total area of the one or two nodes whose boxes the swap changes
   double areaAfter = 0.0;
   double sarBefore = 0.0;
   double sarAfter = 0.0;
@@ -110,8 +110,8 @@ class DynamicAabbTree {
   void refitAncestors(int node);
   void shrinkAncestors(int node);
   void refitNode(int node);
-  void rotate(int node);
-  void swapSubtrees(int node, int upper, int lower);
+  bool rotate(int node);
+  void swapSubtrees(int node, int first, int second);
   int buildTopDown(std::vector<int>& leaves, int begin, int end);
   void requireProxy(int proxy, const char* operation) const;
   static void requireValidBox(const Aabb& box, const char* operation);
