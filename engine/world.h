@@ -67,8 +67,8 @@ struct StepStats {
   int manifolds = 0;
   int manifoldPoints = 0;
   double largestPenetration = 0;  // after the step, m
-  int substeps = 0;               // sequential impulses: substeps taken (more under heavy loads)
-  double contactHertz = 0;        // sequential impulses: contact stiffness used
+  int substeps = 0;               // sequential impulses: the most substeps any island took
+  double contactHertz = 0;        // sequential impulses: the stiffest contact frequency any island used
   NarrowPhaseCounters narrowPhase;
   BroadPhaseStats broadPhase;
 };

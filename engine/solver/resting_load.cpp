@@ -84,17 +84,13 @@ int touchingPoints(const ContactManifold& manifold, double touching) {
   return count;
 }
 
-void seedNewContacts(std::vector<ContactManifold>& manifolds, const std::vector<double>& loads,
-                     const std::vector<double>& touching, double gravity, double h) {
-  for (std::size_t m = 0; m < manifolds.size(); ++m) {
-    ContactManifold& manifold = manifolds[m];
-    if (loads[m] == 0.0 || hasImpulse(manifold)) continue;
-    const int count = touchingPoints(manifold, touching[m]);
-    if (count == 0) continue;
-    const double impulse = loads[m] * gravity * h / count;
-    for (int p = 0; p < manifold.pointCount; ++p)
-      if (manifold.points[p].separation <= touching[m]) manifold.points[p].normalImpulse = impulse;
-  }
+void seedNewContact(ContactManifold& manifold, double load, double touching, double gravity, double h) {
+  if (load == 0.0 || hasImpulse(manifold)) return;
+  const int count = touchingPoints(manifold, touching);
+  if (count == 0) return;
+  const double impulse = load * gravity * h / count;
+  for (int p = 0; p < manifold.pointCount; ++p)
+    if (manifold.points[p].separation <= touching) manifold.points[p].normalImpulse = impulse;
 }
 
 }  // namespace physdbg

@@ -34,10 +34,9 @@ std::vector<double> restingLoads(const std::vector<RigidBody>& bodies, const std
 // Points that touch share a manifold's load.
 int touchingPoints(const ContactManifold& manifold, double touching);
 
-// Manifolds with no impulse at all (new this step) that hold a load get it
-// as their normal impulse for one substep of length h, shared by their
-// touching points. Manifolds that carry impulse from the last step keep it.
-void seedNewContacts(std::vector<ContactManifold>& manifolds, const std::vector<double>& loads,
-                     const std::vector<double>& touching, double gravity, double h);
+// A manifold with no impulse at all (new this step) that holds a load gets
+// it as its normal impulse for one substep of length h, shared by its
+// touching points. A manifold that carries impulse from the last step keeps it.
+void seedNewContact(ContactManifold& manifold, double load, double touching, double gravity, double h);
 
 }  // namespace physdbg

@@ -83,12 +83,44 @@ SolverStepReport SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, c
   const double g = gravity.norm();
   const std::vector<double> loads = g > 0.0 ? restingLoads(bodies, movable, manifolds, touching_, -gravity / g)
                                             : std::vector<double>(manifolds.size(), 0.0);
-  const Stiffness stiffness = chooseStiffness(manifolds, loads, g, dt, settings);
-  const double h = dt / stiffness.substeps;
-  if (settings.warmStarting) {
-    rescaleWarmStart(manifolds, h);
-    seedNewContacts(manifolds, loads, touching_, g, h);
+  lastSubstep_.resize(bodies.size(), 0.0);
+  std::vector<bool> inIsland(bodies.size(), false);
+  SolverStepReport report;
+  for (const ContactIsland& island : buildContactIslands(manifolds, movable)) {
+    const Stiffness stiffness = chooseStiffness(manifolds, island, loads, g, dt, settings);
+    const double h = dt / stiffness.substeps;
+    if (settings.warmStarting) {
+      rescaleWarmStart(manifolds, island, movable, h);
+      for (std::uint32_t m : island.manifolds) seedNewContact(manifolds[m], loads[m], touching_[m], g, h);
+    }
+    solveIsland(bodies, manifolds, island, stiffness, dt, settings);
+    for (std::uint32_t id : island.bodies) {
+      inIsland[id] = true;
+      lastSubstep_[id] = h;
+    }
+    report.largestPenetration = std::max(report.largestPenetration, largestPenetration(manifolds, island));
+    report.substeps = std::max(report.substeps, stiffness.substeps);
+    report.contactHertz = std::max(report.contactHertz, stiffness.hertz);
   }
+  // Bodies touching nothing movable follow the same substeps as a calm island.
+  const int substeps = std::max(settings.substeps, 1);
+  const double h = dt / substeps;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (!movable[i] || inIsland[i]) continue;
+    for (int substep = 0; substep < substeps; ++substep) {
+      bodies[i].integrateVelocity(h);
+      bodies[i].integratePosition(h);
+    }
+    lastSubstep_[i] = h;
+  }
+  if (report.substeps == 0) report = {0.0, substeps, settings.contactHertz};
+  return report;
+}
+
+void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
+                                          const ContactIsland& island, const Stiffness& stiffness, double dt,
+                                          const SolverSettings& settings) {
+  const double h = dt / stiffness.substeps;
   Softness softness;
   if (stiffness.hertz > 0.0) {
     const double omega = 2.0 * std::numbers::pi * stiffness.hertz;
@@ -97,28 +129,25 @@ SolverStepReport SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, c
     const double a3 = 1.0 / (1.0 + a2);
     softness = {omega / a1, a2 * a3, a3};
   }
-  measureGaps(manifolds);
+  measureGaps(manifolds, island);
   const Softness rigid;
   for (int substep = 0; substep < stiffness.substeps; ++substep) {
-    for (std::size_t i = 0; i < bodies.size(); ++i)
-      if (movable[i]) bodies[i].integrateVelocity(h);
-    loadVelocities(bodies);
-    if (settings.warmStarting) warmStart(manifolds);
+    for (std::uint32_t id : island.bodies) bodies[id].integrateVelocity(h);
+    loadVelocities(bodies, island);
+    if (settings.warmStarting) warmStart(manifolds, island);
     for (int iteration = 0; iteration < settings.velocityIterations; ++iteration)
-      solve(manifolds, h, softness, true, (substep + iteration) % 2 == 1, settings);
-    storeVelocities(bodies);
-    for (std::size_t i = 0; i < bodies.size(); ++i)
-      if (movable[i]) bodies[i].integratePosition(h);
-    loadPoses(bodies);
-    measureGaps(manifolds);
-    loadVelocities(bodies);
-    solve(manifolds, h, rigid, false, substep % 2 == 0, settings);
-    storeVelocities(bodies);
+      solve(manifolds, island, h, softness, true, (substep + iteration) % 2 == 1, settings);
+    storeVelocities(bodies, island);
+    for (std::uint32_t id : island.bodies) bodies[id].integratePosition(h);
+    loadPoses(bodies, island);
+    measureGaps(manifolds, island);
+    loadVelocities(bodies, island);
+    solve(manifolds, island, h, rigid, false, substep % 2 == 0, settings);
+    storeVelocities(bodies, island);
   }
-  loadVelocities(bodies);
-  applyRestitution(manifolds);
-  storeVelocities(bodies);
-  return {largestPenetration(manifolds), stiffness.substeps, stiffness.hertz};
+  loadVelocities(bodies, island);
+  applyRestitution(manifolds, island);
+  storeVelocities(bodies, island);
 }
 
 // The contact frequency is the settings' unless the most loaded touching
@@ -126,19 +155,20 @@ SolverStepReport SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, c
 // frequency, since a soft contact stiffer than a quarter of the substep rate
 // rings. Past maxSubsteps the frequency is capped and the overlap grows.
 SequentialImpulseSolver::Stiffness SequentialImpulseSolver::chooseStiffness(
-    const std::vector<ContactManifold>& manifolds, const std::vector<double>& loads, double gravity, double dt,
-    const SolverSettings& settings) const {
+    const std::vector<ContactManifold>& manifolds, const ContactIsland& island, const std::vector<double>& loads,
+    double gravity, double dt, const SolverSettings& settings) const {
   const int fewest = std::max(settings.substeps, 1);
   const int most = std::max(settings.maxSubsteps, fewest);
   double hertz = settings.contactHertz;
   if (hertz > 0.0 && settings.restingOverlap > 0.0 && most > fewest) {
     // Largest (supported mass / effective mass) / allowed overlap, per point.
     double demand = 0.0;
-    for (std::size_t m = 0; m < manifolds.size(); ++m) {
+    for (std::uint32_t m : island.manifolds) {
       if (loads[m] == 0.0) continue;
       const int touching = touchingPoints(manifolds[m], touching_[m]);
       if (touching == 0) continue;
-      const double allowed = std::min(settings.restingOverlap, settings.relativeRestingOverlap * bodySize(manifolds[m]));
+      const double allowed =
+          std::min(settings.restingOverlap, settings.relativeRestingOverlap * bodySize(manifolds[m]));
       for (int p = 0; p < manifolds[m].pointCount; ++p) {
         const double mass = constraints_[m * ContactManifold::maxPoints + p].normalMass;
         if (mass > 0.0) demand = std::max(demand, loads[m] / touching / mass / allowed);
@@ -156,29 +186,33 @@ SequentialImpulseSolver::Stiffness SequentialImpulseSolver::chooseStiffness(
 // rod's thickness. Of the two bodies, the smaller movable one.
 double SequentialImpulseSolver::bodySize(const ContactManifold& manifold) const {
   const double a = solverBodies_[manifold.a].size, b = solverBodies_[manifold.b].size;
-  return std::min(solverBodies_[manifold.a].inverseMass > 0.0 ? a : b, solverBodies_[manifold.b].inverseMass > 0.0 ? b : a);
+  return std::min(solverBodies_[manifold.a].inverseMass > 0.0 ? a : b,
+                  solverBodies_[manifold.b].inverseMass > 0.0 ? b : a);
 }
 
-// Impulses carried from the last step were found over its substep; a step
-// with a different substep scales them so they still mean the same force.
-void SequentialImpulseSolver::rescaleWarmStart(std::vector<ContactManifold>& manifolds, double substep) {
-  if (previousSubstep_ > 0.0 && substep != previousSubstep_) {
-    const double scale = substep / previousSubstep_;
-    for (ContactManifold& manifold : manifolds)
-      for (int p = 0; p < manifold.pointCount; ++p) {
-        ManifoldPoint& point = manifold.points[p];
-        point.normalImpulse *= scale;
-        point.tangentImpulse[0] *= scale;
-        point.tangentImpulse[1] *= scale;
-      }
+// Impulses carried from the last step were found over its substep (the
+// one its bodies took); a step with a different substep scales them so they
+// still mean the same force.
+void SequentialImpulseSolver::rescaleWarmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
+                                               const std::vector<bool>& movable, double substep) const {
+  for (std::uint32_t m : island.manifolds) {
+    ContactManifold& manifold = manifolds[m];
+    const double previous = std::max(movable[manifold.a] ? lastSubstep_[manifold.a] : 0.0,
+                                     movable[manifold.b] ? lastSubstep_[manifold.b] : 0.0);
+    if (previous == 0.0 || previous == substep) continue;
+    const double scale = substep / previous;
+    for (int p = 0; p < manifold.pointCount; ++p) {
+      ManifoldPoint& point = manifold.points[p];
+      point.normalImpulse *= scale;
+      point.tangentImpulse[0] *= scale;
+      point.tangentImpulse[1] *= scale;
+    }
   }
-  previousSubstep_ = substep;
 }
 
 void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                       std::vector<ContactManifold>& manifolds, const SolverSettings& settings) {
   solverBodies_.resize(bodies.size());
-  active_.clear();
   std::vector<bool> listed(bodies.size(), false);
   for (const ContactManifold& manifold : manifolds) {
     for (std::uint32_t id : {manifold.a, manifold.b}) {
@@ -199,7 +233,6 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
       std::sort(extents.data(), extents.data() + 3);
       body.size = extents[1];
       body.rotation = source.orientation().toRotationMatrix();
-      if (movable[id]) active_.push_back(id);
     }
   }
   constraints_.resize(manifolds.size() * ContactManifold::maxPoints);
@@ -245,22 +278,22 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
   }
 }
 
-void SequentialImpulseSolver::loadVelocities(const std::vector<RigidBody>& bodies) {
-  for (std::uint32_t id : active_) {
+void SequentialImpulseSolver::loadVelocities(const std::vector<RigidBody>& bodies, const ContactIsland& island) {
+  for (std::uint32_t id : island.bodies) {
     solverBodies_[id].linearVelocity = bodies[id].linearVelocity();
     solverBodies_[id].angularVelocity = bodies[id].angularVelocity();
   }
 }
 
-void SequentialImpulseSolver::storeVelocities(std::vector<RigidBody>& bodies) const {
-  for (std::uint32_t id : active_) {
+void SequentialImpulseSolver::storeVelocities(std::vector<RigidBody>& bodies, const ContactIsland& island) const {
+  for (std::uint32_t id : island.bodies) {
     bodies[id].setLinearVelocity(solverBodies_[id].linearVelocity);
     bodies[id].setAngularVelocity(solverBodies_[id].angularVelocity);
   }
 }
 
-void SequentialImpulseSolver::loadPoses(const std::vector<RigidBody>& bodies) {
-  for (std::uint32_t id : active_) {
+void SequentialImpulseSolver::loadPoses(const std::vector<RigidBody>& bodies, const ContactIsland& island) {
+  for (std::uint32_t id : island.bodies) {
     solverBodies_[id].position = bodies[id].position();
     solverBodies_[id].rotation = bodies[id].orientation().toRotationMatrix();
   }
@@ -268,16 +301,16 @@ void SequentialImpulseSolver::loadPoses(const std::vector<RigidBody>& bodies) {
 
 // Poses change only when positions are integrated, once per substep, so the
 // gaps are measured then and shared by every sweep until the next move.
-void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& manifolds) {
-  for (std::size_t m = 0; m < manifolds.size(); ++m) {
+void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) {
+  for (std::uint32_t m : island.manifolds) {
     const ContactManifold& manifold = manifolds[m];
     for (int p = 0; p < manifold.pointCount; ++p)
       constraints_[m * ContactManifold::maxPoints + p].gap = separation(manifold, manifold.points[p]);
   }
 }
 
-void SequentialImpulseSolver::warmStart(const std::vector<ContactManifold>& manifolds) {
-  for (std::size_t m = 0; m < manifolds.size(); ++m) {
+void SequentialImpulseSolver::warmStart(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) {
+  for (std::uint32_t m : island.manifolds) {
     const ContactManifold& manifold = manifolds[m];
     for (int p = 0; p < manifold.pointCount; ++p) {
       const ManifoldPoint& point = manifold.points[p];
@@ -388,9 +421,10 @@ void SequentialImpulseSolver::prepareApproaches(const std::vector<ContactManifol
 // Every other sweep visits the points of each manifold in reverse: a fixed
 // order hands the first corner the largest share of every correction, which
 // tilts a stack the same way step after step until it walks sideways.
-void SequentialImpulseSolver::solve(std::vector<ContactManifold>& manifolds, double substep, const Softness& softness,
-                                    bool useBias, bool reversed, const SolverSettings& settings) {
-  for (std::size_t m = 0; m < manifolds.size(); ++m) {
+void SequentialImpulseSolver::solve(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
+                                    double substep, const Softness& softness, bool useBias, bool reversed,
+                                    const SolverSettings& settings) {
+  for (std::uint32_t m : island.manifolds) {
     ContactManifold& manifold = manifolds[m];
     if (!(approaching_[m] && solveApproachTogether(manifold, m, substep)))
       solveNormals(manifold, m, substep, softness, useBias, reversed, settings);
@@ -423,8 +457,8 @@ void SequentialImpulseSolver::solveFriction(ContactManifold& manifold, std::size
 // Restitution once, after the substeps, only where the contact pushed: the
 // approach velocity measured before the solve is reversed and scaled by e.
 // A speculative point bounces on the step it would have hit.
-void SequentialImpulseSolver::applyRestitution(std::vector<ContactManifold>& manifolds) {
-  for (std::size_t m = 0; m < manifolds.size(); ++m) {
+void SequentialImpulseSolver::applyRestitution(std::vector<ContactManifold>& manifolds, const ContactIsland& island) {
+  for (std::uint32_t m : island.manifolds) {
     ContactManifold& manifold = manifolds[m];
     for (int p = 0; p < manifold.pointCount; ++p) {
       ManifoldPoint& point = manifold.points[p];
@@ -439,11 +473,12 @@ void SequentialImpulseSolver::applyRestitution(std::vector<ContactManifold>& man
   }
 }
 
-double SequentialImpulseSolver::largestPenetration(const std::vector<ContactManifold>& manifolds) const {
+double SequentialImpulseSolver::largestPenetration(const std::vector<ContactManifold>& manifolds,
+                                                   const ContactIsland& island) const {
   double deepest = 0.0;
-  for (const ContactManifold& manifold : manifolds) {
-    for (int p = 0; p < manifold.pointCount; ++p)
-      deepest = std::max(deepest, -separation(manifold, manifold.points[p]));
+  for (std::uint32_t m : island.manifolds) {
+    for (int p = 0; p < manifolds[m].pointCount; ++p)
+      deepest = std::max(deepest, -separation(manifolds[m], manifolds[m].points[p]));
   }
   return deepest;
 }

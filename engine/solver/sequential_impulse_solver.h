@@ -12,19 +12,21 @@
 // light body under a heavy one would sink far (resting_load.h). Each step
 // finds the weight every contact holds, stiffens the contacts (and takes
 // more substeps) until the most loaded one settles within restingOverlap,
-// and starts new contacts at their load.
+// and starts new contacts at their load. This is decided per island
+// (contact_islands.h), so only the pile that needs it pays for it.
 #include <vector>
 
 #include "engine/contacts/contact_manifold.h"
 #include "engine/dynamics/rigid_body.h"
+#include "engine/solver/contact_islands.h"
 #include "engine/solver/solver_settings.h"
 
 namespace physdbg {
 
 struct SolverStepReport {
   double largestPenetration = 0.0;  // left after the step, m
-  int substeps = 0;                 // taken this step
-  double contactHertz = 0.0;        // stiffness used this step
+  int substeps = 0;                 // the most any island took this step
+  double contactHertz = 0.0;        // the stiffest any island used this step
 };
 
 class SequentialImpulseSolver {
@@ -75,26 +77,30 @@ class SequentialImpulseSolver {
     int substeps = 1;
     double hertz = 0.0;
   };
-  Stiffness chooseStiffness(const std::vector<ContactManifold>& manifolds, const std::vector<double>& loads,
-                            double gravity, double dt, const SolverSettings& settings) const;
+  Stiffness chooseStiffness(const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
+                            const std::vector<double>& loads, double gravity, double dt,
+                            const SolverSettings& settings) const;
   double bodySize(const ContactManifold& manifold) const;
-  void rescaleWarmStart(std::vector<ContactManifold>& manifolds, double substep);
+  void rescaleWarmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
+                        const std::vector<bool>& movable, double substep) const;
+  void solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds, const ContactIsland& island,
+                   const Stiffness& stiffness, double dt, const SolverSettings& settings);
   void prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                std::vector<ContactManifold>& manifolds, const SolverSettings& settings);
-  void loadVelocities(const std::vector<RigidBody>& bodies);
-  void storeVelocities(std::vector<RigidBody>& bodies) const;
-  void loadPoses(const std::vector<RigidBody>& bodies);
-  void measureGaps(const std::vector<ContactManifold>& manifolds);
-  void warmStart(const std::vector<ContactManifold>& manifolds);
+  void loadVelocities(const std::vector<RigidBody>& bodies, const ContactIsland& island);
+  void storeVelocities(std::vector<RigidBody>& bodies, const ContactIsland& island) const;
+  void loadPoses(const std::vector<RigidBody>& bodies, const ContactIsland& island);
+  void measureGaps(const std::vector<ContactManifold>& manifolds, const ContactIsland& island);
+  void warmStart(const std::vector<ContactManifold>& manifolds, const ContactIsland& island);
   void prepareApproaches(const std::vector<ContactManifold>& manifolds);
   void solveNormals(ContactManifold& manifold, std::size_t m, double substep, const Softness& softness, bool useBias,
                     bool reversed, const SolverSettings& settings);
   bool solveApproachTogether(ContactManifold& manifold, std::size_t m, double substep);
   void solveFriction(ContactManifold& manifold, std::size_t m, bool reversed);
-  void solve(std::vector<ContactManifold>& manifolds, double substep, const Softness& softness, bool useBias,
-             bool reversed, const SolverSettings& settings);
-  void applyRestitution(std::vector<ContactManifold>& manifolds);
-  double largestPenetration(const std::vector<ContactManifold>& manifolds) const;
+  void solve(std::vector<ContactManifold>& manifolds, const ContactIsland& island, double substep,
+             const Softness& softness, bool useBias, bool reversed, const SolverSettings& settings);
+  void applyRestitution(std::vector<ContactManifold>& manifolds, const ContactIsland& island);
+  double largestPenetration(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
   double separation(const ContactManifold& manifold, const ManifoldPoint& point) const;
   Vec3 relativeVelocity(const ContactManifold& manifold, const PointConstraint& constraint) const;
   double rowVelocity(const ContactManifold& manifold, const PointConstraint& constraint, const Vec3& direction,
@@ -103,13 +109,12 @@ class SequentialImpulseSolver {
                 double impulse);
 
   std::vector<SolverBody> solverBodies_;
-  std::vector<std::uint32_t> active_;             // movable bodies that appear in a manifold
   std::vector<PointConstraint> constraints_;      // maxPoints per manifold
   std::vector<double> touching_;                  // per manifold: largest separation that holds weight, m
   std::vector<bool> approaching_;                 // per manifold: every point still apart at the start
   std::vector<Eigen::Matrix4d> approachMass_;     // per manifold, where approaching_: normal rows' J M^-1 J^T
   std::vector<Eigen::Matrix4d> approachInverse_;  // and its pseudo-inverse
-  double previousSubstep_ = 0.0;                  // the substep the manifolds' impulses were found with
+  std::vector<double> lastSubstep_;               // per body: the substep it took last step (0: none yet)
 };
 
 }  // namespace physdbg

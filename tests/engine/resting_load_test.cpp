@@ -50,10 +50,9 @@ TEST(RestingLoad, EachContactOfAStackHoldsEverythingAboveIt) {
 }
 
 TEST(RestingLoad, ABridgeSplitsItsWeightBetweenItsTwoPiers) {
-  const SteppedWorld bridge({staticBox(Vec3(0, -0.5, 0), Vec3(5, 0.5, 5)),
-                             box(Vec3(-1.5, 0.5, 0), Vec3(0.5, 0.5, 0.5), 1.0),
-                             box(Vec3(1.5, 0.5, 0), Vec3(0.5, 0.5, 0.5), 1.0),
-                             box(Vec3(0, 1.25, 0), Vec3(2.0, 0.25, 0.5), 4.0)});
+  const SteppedWorld bridge(
+      {staticBox(Vec3(0, -0.5, 0), Vec3(5, 0.5, 5)), box(Vec3(-1.5, 0.5, 0), Vec3(0.5, 0.5, 0.5), 1.0),
+       box(Vec3(1.5, 0.5, 0), Vec3(0.5, 0.5, 0.5), 1.0), box(Vec3(0, 1.25, 0), Vec3(2.0, 0.25, 0.5), 4.0)});
   EXPECT_NEAR(bridge.load(1, 3), 2.0, 1e-12);
   EXPECT_NEAR(bridge.load(2, 3), 2.0, 1e-12);
   EXPECT_NEAR(bridge.load(0, 1), 3.0, 1e-12);
@@ -87,7 +86,7 @@ TEST(RestingLoad, SeedingStartsOnlyNewTouchingPointsAtTheirShare) {
                                             manifoldWithSeparations({-0.001, -0.001})};
   manifolds[1].points[0].normalImpulse = 0.5;  // carried over: left as it is
   const double gravity = 10.0, h = 0.01, touching = 0.005;
-  seedNewContacts(manifolds, {3.0, 3.0}, {touching, touching}, gravity, h);
+  for (ContactManifold& manifold : manifolds) seedNewContact(manifold, 3.0, touching, gravity, h);
   // 3 kg x 10 m/s^2 x 0.01 s over the two touching points; the point 2 cm
   // away is speculative and holds nothing.
   EXPECT_NEAR(manifolds[0].points[0].normalImpulse, 0.15, 1e-15);

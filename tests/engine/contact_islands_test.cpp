@@ -1,0 +1,77 @@
+// Islands: which bodies a contact links, and that islands are solved
+// independently (a pile's motion does not depend on what else is in the
+// world, even when another island needs more substeps).
+#include "engine/solver/contact_islands.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "engine/colliders/box_collider.h"
+#include "engine/world.h"
+#include "scenes/body_builders.h"
+#include "scenes/stability_scenes.h"
+
+namespace physdbg {
+namespace {
+
+ContactManifold between(std::uint32_t a, std::uint32_t b) {
+  ContactManifold manifold;
+  manifold.a = a;
+  manifold.b = b;
+  manifold.pointCount = 1;
+  return manifold;
+}
+
+TEST(ContactIslands, ImmovableBodiesDoNotLinkIslands) {
+  // 0 floor (static), 1-2 a stack, 3-4 another stack, 5 asleep under 6.
+  const std::vector<bool> movable = {false, true, true, true, true, false, true};
+  const std::vector<ContactManifold> manifolds = {between(0, 1), between(1, 2), between(0, 3),
+                                                  between(3, 4), between(5, 6), between(0, 5)};
+  const std::vector<ContactIsland> islands = buildContactIslands(manifolds, movable);
+  ASSERT_EQ(islands.size(), 3u);
+  EXPECT_EQ(islands[0].manifolds, (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_EQ(islands[0].bodies, (std::vector<std::uint32_t>{1, 2}));
+  EXPECT_EQ(islands[1].manifolds, (std::vector<std::uint32_t>{2, 3}));
+  EXPECT_EQ(islands[1].bodies, (std::vector<std::uint32_t>{3, 4}));
+  EXPECT_EQ(islands[2].manifolds, (std::vector<std::uint32_t>{4}));
+  EXPECT_EQ(islands[2].bodies, (std::vector<std::uint32_t>{6}));
+}
+
+TEST(ContactIslands, AChainJoinsOneIslandWhateverTheManifoldOrder) {
+  const std::vector<bool> movable(5, true);
+  const std::vector<ContactManifold> manifolds = {between(3, 4), between(0, 1), between(2, 3), between(1, 2)};
+  const std::vector<ContactIsland> islands = buildContactIslands(manifolds, movable);
+  ASSERT_EQ(islands.size(), 1u);
+  EXPECT_EQ(islands[0].manifolds, (std::vector<std::uint32_t>{0, 1, 2, 3}));
+  EXPECT_EQ(islands[0].bodies, (std::vector<std::uint32_t>{0, 1, 2, 3, 4}));
+}
+
+// The same 3-box stack, alone and beside a 30 kg on 0.1 kg stack (which
+// takes 12 substeps): its boxes follow bit-identical paths, at 8 substeps.
+TEST(ContactIslands, AStackMovesTheSameWhateverElseIsInTheWorld) {
+  SceneDescription alone = massStackScene({1.0, 1.0, 1.0});
+  SceneDescription shared = alone;
+  for (double mass : {0.1, 30.0}) {
+    BodyDefinition box = alone.bodies[1];
+    box.mass = mass;
+    box.position = Vec3(3.0, mass < 1.0 ? 0.5 : 1.5, 0.0);
+    shared.bodies.push_back(box);
+  }
+  World first = buildWorld(alone), second = buildWorld(shared);
+  int most = 0;
+  for (int i = 0; i < 120; ++i) {
+    first.step();
+    second.step();
+    most = std::max(most, second.lastStepStats().substeps);
+    EXPECT_EQ(first.lastStepStats().substeps, 8);
+  }
+  EXPECT_GT(most, 8);
+  for (BodyId id = 1; id <= 3; ++id) {
+    EXPECT_EQ(first.body(id).position(), second.body(id).position()) << "body " << id;
+    EXPECT_EQ(first.body(id).orientation().coeffs(), second.body(id).orientation().coeffs()) << "body " << id;
+  }
+}
+
+}  // namespace
+}  // namespace physdbg
