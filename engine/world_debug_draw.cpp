@@ -89,20 +89,30 @@ void emitContacts(const std::vector<Contact>& contacts, double scale, dd::Frame&
   }
 }
 
-// Under the sequential-impulse solver the contact is the manifold: every
-// point it holds the bodies with (within the linear slop), each with the
-// pair's normal. Speculative points further apart are left out.
+// Under the sequential-impulse solver the contact is the manifold: a dot
+// for every point that holds the bodies (within the linear slop), and one
+// normal arrow per manifold from the middle of those points, growing with
+// the deepest one. The points share the normal; four parallel arrows per
+// face would only clutter the picture. Speculative points are left out.
 void emitManifoldPoints(const std::vector<ContactManifold>& manifolds, double touching, double scale,
                         dd::Frame& frame) {
   for (const ContactManifold& manifold : manifolds) {
+    Vec3 middle = Vec3::Zero();
+    double deepest = 0.0;
+    int count = 0;
     for (int p = 0; p < manifold.pointCount; ++p) {
       const ManifoldPoint& contact = manifold.points[p];
       if (contact.separation > touching) continue;
       const Vec3 point = 0.5 * (contact.pointA + contact.pointB);
       frame.points.push_back({point, 7.0f, dd::colors::contactPoint});
-      const double length = scale * (0.25 + 4.0 * std::max(-contact.separation, 0.0));
-      frame.arrows.push_back({point, point + manifold.normal * length, dd::colors::contactNormal});
+      middle += point;
+      deepest = std::max(deepest, -contact.separation);
+      ++count;
     }
+    if (count == 0) continue;
+    middle /= count;
+    const double length = scale * (0.25 + 4.0 * deepest);
+    frame.arrows.push_back({middle, middle + manifold.normal * length, dd::colors::contactNormal});
   }
 }
 
