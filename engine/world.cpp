@@ -35,7 +35,7 @@ World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
 BodyId World::addBody(const BodyDefinition& definition) {
-  bodies_.emplace_back(definition);
+  bodies_.emplace_back(aboutCentreOfMass(definition));
   const auto id = static_cast<BodyId>(bodies_.size() - 1);
   const RigidBody& body = bodies_.back();
   proxies_.push_back(broadPhase_->addProxy(body.collider().worldBounds(body.transform()), id,

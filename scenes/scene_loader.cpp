@@ -146,17 +146,6 @@ std::shared_ptr<const Collider> readConvex(const SceneReader& reader, const json
   }
 }
 
-// A body rotates about its centre of mass, so a hull whose points are not
-// centred on it is re-expressed about its centroid and the body moved there.
-void centreConvexBody(BodyDefinition& body) {
-  const auto* hull = dynamic_cast<const ConvexMeshCollider*>(body.collider.get());
-  if (!hull || hull->centroid().norm() == 0.0) return;
-  std::vector<Vec3> points = hull->hullVertices();
-  for (Vec3& point : points) point -= hull->centroid();
-  body.position += body.orientation * hull->centroid();
-  body.collider = std::make_shared<ConvexMeshCollider>(points);
-}
-
 std::shared_ptr<const Collider> readShape(const SceneReader& reader, const json& value, const std::string& path) {
   reader.requireObject(value, path);
   if (value.size() != 1)
@@ -221,7 +210,7 @@ void readBody(const SceneReader& reader, const json& value, const std::string& p
     body.lockTranslation = reader.bool3(value["lock_translation"], key("lock_translation"));
   if (value.contains("lock_rotation")) body.lockRotation = reader.bool3(value["lock_rotation"], key("lock_rotation"));
 
-  centreConvexBody(body);
+  body = aboutCentreOfMass(body);  // the scene states the body where its centre of mass is
   if (!value.contains("repeat")) {
     bodies.push_back(body);
     return;

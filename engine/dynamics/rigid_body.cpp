@@ -1,7 +1,10 @@
 #include "engine/dynamics/rigid_body.h"
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
+
+#include "engine/colliders/convex_mesh_collider.h"
 
 namespace physdbg {
 namespace {
@@ -21,6 +24,19 @@ Quat rotationFromVector(const Vec3& rotation) {
 }
 
 }  // namespace
+
+BodyDefinition aboutCentreOfMass(BodyDefinition definition) {
+  const auto* hull = dynamic_cast<const ConvexMeshCollider*>(definition.collider.get());
+  if (hull == nullptr) return definition;
+  // Re-centred points leave a centroid of rounding size: leave those be.
+  const double size = hull->localBounds().halfExtents().norm();
+  if (hull->centroid().norm() <= 1e-12 * size) return definition;
+  std::vector<Vec3> points = hull->hullVertices();
+  for (Vec3& point : points) point -= hull->centroid();
+  definition.position += definition.orientation * hull->centroid();
+  definition.collider = std::make_shared<ConvexMeshCollider>(points);
+  return definition;
+}
 
 RigidBody::RigidBody(const BodyDefinition& definition)
     : collider_(definition.collider),

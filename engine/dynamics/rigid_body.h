@@ -34,6 +34,13 @@ struct BodyDefinition {
   std::array<bool, 3> lockRotation{false, false, false};     // world axes
 };
 
+// A body turns about its centre of mass, which is its position. A convex
+// mesh given in a frame whose origin is not its centroid is re-expressed
+// about the centroid, and the position moved there (by the orientation), so
+// the same points in the same place give the right dynamics. Other bodies
+// come back unchanged. World::addBody and the scene loader both apply it.
+BodyDefinition aboutCentreOfMass(BodyDefinition definition);
+
 class RigidBody {
  public:
   // Throws std::invalid_argument for a missing collider, a non-positive mass

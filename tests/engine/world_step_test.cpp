@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine/colliders/box_collider.h"
+#include "engine/colliders/convex_mesh_collider.h"
 #include "engine/colliders/sphere_collider.h"
 #include "engine/world.h"
 
@@ -309,6 +310,32 @@ TEST(WorldStep, OffCentreHitSpinsABoxWithTheAngularMomentumOfTheImpulse) {
 // sinks at most g dt^2 per step and stops inside the allowed penetration,
 // which the correction leaves alone. Either way it stays within the allowed
 // penetration of its start.
+// A hull given away from its frame's origin: the world moves the body to the
+// centroid (the point it turns about) and leaves the shape where it was.
+// Spun with no gravity, its centroid must then stay put.
+TEST(WorldStep, OffCentreHullTurnsAboutItsCentroid) {
+  WorldSettings settings;
+  settings.gravity = Vec3::Zero();
+  World world(settings);
+  BodyDefinition hull;
+  std::vector<Vec3> corners;
+  for (int i = 0; i < 8; ++i) corners.push_back(Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1) * 2.0);  // cube [0, 2]^3
+  hull.collider = std::make_shared<ConvexMeshCollider>(corners);
+  const Quat turn(Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()));
+  hull.orientation = turn;
+  hull.position = Vec3(5, 0, 0);
+  hull.angularVelocity = Vec3(0, 0, 4);
+  const Aabb before = hull.collider->worldBounds({hull.position, hull.orientation});
+  const BodyId id = world.addBody(hull);
+  const RigidBody& body = world.body(id);
+  EXPECT_TRUE(body.position().isApprox(Vec3(5, 0, 0) + turn * Vec3(1, 1, 1), 1e-12));
+  const Aabb after = body.collider().worldBounds(body.transform());
+  EXPECT_TRUE(after.min.isApprox(before.min, 1e-12) && after.max.isApprox(before.max, 1e-12));
+  const Vec3 centre = body.position();
+  for (int i = 0; i < 100; ++i) world.step();
+  EXPECT_LT((body.position() - centre).norm(), 1e-12);
+}
+
 TEST(WorldStep, RestingSphereStaysAtRestFor1000Steps) {
   for (const double gap : {0.0, 0.001}) {
     SCOPED_TRACE(gap);
