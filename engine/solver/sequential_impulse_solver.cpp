@@ -102,7 +102,15 @@ SolverStepReport SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, c
     report.substeps = std::max(report.substeps, stiffness.substeps);
     report.contactHertz = std::max(report.contactHertz, stiffness.hertz);
   }
-  // Bodies touching nothing movable follow the same substeps as a calm island.
+  integrateFreeBodies(bodies, movable, inIsland, dt, settings);
+  if (report.substeps == 0) report = {0.0, std::max(settings.substeps, 1), settings.contactHertz};
+  return report;
+}
+
+// Bodies in no manifold take the base substeps, as a calm island would.
+void SequentialImpulseSolver::integrateFreeBodies(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                                                  const std::vector<bool>& inIsland, double dt,
+                                                  const SolverSettings& settings) {
   const int substeps = std::max(settings.substeps, 1);
   const double h = dt / substeps;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
@@ -113,8 +121,6 @@ SolverStepReport SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, c
     }
     lastSubstep_[i] = h;
   }
-  if (report.substeps == 0) report = {0.0, substeps, settings.contactHertz};
-  return report;
 }
 
 void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,

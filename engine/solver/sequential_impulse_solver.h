@@ -83,6 +83,8 @@ class SequentialImpulseSolver {
   double bodySize(const ContactManifold& manifold) const;
   void rescaleWarmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
                         const std::vector<bool>& movable, double substep) const;
+  void integrateFreeBodies(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                           const std::vector<bool>& inIsland, double dt, const SolverSettings& settings);
   void solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds, const ContactIsland& island,
                    const Stiffness& stiffness, double dt, const SolverSettings& settings);
   void prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
