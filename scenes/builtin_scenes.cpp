@@ -54,7 +54,10 @@ const std::vector<BuiltinScene>& builtinScenes() {
 
 SceneDescription resolveScene(const std::string& nameOrPath) {
   for (const BuiltinScene& scene : builtinScenes()) {
-    if (scene.name == nameOrPath) return scene.make();
+    if (scene.name != nameOrPath) continue;
+    SceneDescription made = scene.make();
+    made.source = "built-in scene " + scene.name;
+    return made;
   }
   if (!std::filesystem::exists(nameOrPath)) {
     std::string names;

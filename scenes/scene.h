@@ -27,6 +27,11 @@ struct SceneCamera {
 
 struct SceneDescription {
   std::string name;
+  // Where the scene came from ("drop.json", "built-in scene stack"), and for
+  // each body the JSON entry it was read from (empty for built-in scenes), so
+  // errors raised while building the world name the file and the key.
+  std::string source;
+  std::vector<std::size_t> bodyEntries;
   std::string description;
   WorldSettings world;
   int steps = 240;

@@ -1,0 +1,25 @@
+#pragma once
+// Bounds on what a scene file may ask for. Scene files come from other people
+// and run unattended in CI, so every size that drives an allocation or a loop
+// is checked against these before anything is built. They are documented in
+// scenes/README.md ("Limits"); change both together.
+#include <cstddef>
+#include <cstdint>
+
+namespace physdbg::scene_limits {
+
+inline constexpr std::uintmax_t maxFileBytes = 64u << 20;  // 64 MiB of JSON
+inline constexpr int maxNesting = 32;                       // arrays and objects inside each other
+inline constexpr long long maxBodies = 1'000'000;           // after `repeat` is expanded
+inline constexpr std::size_t maxHullPoints = 100'000;       // per convex shape
+inline constexpr long long maxSteps = 10'000'000;
+inline constexpr int maxSubsteps = 1000;
+inline constexpr int maxIterations = 1000;
+inline constexpr long long maxSweepsPerStep = 10'000;  // max_substeps x iterations
+inline constexpr double minDt = 1e-6, maxDt = 1.0;     // seconds
+// Every other number: finite, |x| <= maxMagnitude; sizes and masses >= minSize.
+inline constexpr double maxMagnitude = 1e9;
+inline constexpr double minSize = 1e-9;
+inline constexpr std::size_t maxEchoedChars = 48;  // of a value or key quoted in a message
+
+}  // namespace physdbg::scene_limits
