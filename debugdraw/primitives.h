@@ -3,6 +3,7 @@
 // Positions are double so that a scene 1e7 m from the origin still draws
 // correctly: the renderer subtracts its camera origin before going to float.
 // A Frame is plain data, so it can be recorded, replayed, or compared.
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -122,6 +123,13 @@ struct Arrow {
   Vec3 from, to;
   Color color;
 };
+
+// Bounds on overlay text. The renderer builds about 5.5 KiB of triangles per
+// character (glyph plus an eight-way outline), so unbounded text from a
+// recording could take gigabytes; these keep a frame's text under ~100 MiB.
+// Recording readers refuse more; the text geometry builder refuses it too.
+inline constexpr std::size_t maxTextCharacters = 4096;        // one Text
+inline constexpr std::size_t maxFrameTextCharacters = 16384;  // all Texts of a frame
 
 // Screen-space text, pixels from the top-left corner.
 struct Text {

@@ -10,6 +10,9 @@ namespace physdbg::render {
 namespace {
 
 constexpr debugdraw::Color kOutlineColor{0.0f, 0.0f, 0.0f, 0.85f};
+constexpr std::size_t kMaxQuadsPerCharacter = 11;  // stb_easy_font's busiest glyph
+constexpr std::size_t kVerticesPerQuad = 6;
+constexpr std::size_t kPassesPerText = 9;  // eight outline offsets and the glyphs
 
 struct Quad {
   float x0, y0, x1, y1;  // font units, y down
@@ -37,6 +40,9 @@ std::vector<Quad> glyphQuads(const std::string& text) {
 }
 
 void validate(const debugdraw::Text& text) {
+  if (text.text.size() > debugdraw::maxTextCharacters)
+    throw std::invalid_argument("debug draw: text of " + std::to_string(text.text.size()) +
+                                " characters, over the limit of " + std::to_string(debugdraw::maxTextCharacters));
   if (!(text.scale > 0) || !std::isfinite(text.scale))
     throw std::invalid_argument("debug draw: text scale must be positive, got " + std::to_string(text.scale));
   if (!std::isfinite(text.x) || !std::isfinite(text.y))
@@ -50,7 +56,11 @@ void appendQuads(const debugdraw::Text& text, float offsetX, float offsetY, cons
     return TextVertex{{originX + std::round(x * text.scale), originY + std::round(y * text.scale)},
                       {color.r, color.g, color.b, color.a}};
   };
-  for (const Quad& quad : glyphQuads(text.text)) {
+  const std::vector<Quad> quads = glyphQuads(text.text);
+  if (triangles.size() + quads.size() * kVerticesPerQuad > maxTextVertices())
+    throw std::invalid_argument("debug draw: a frame's text is over the limit of " +
+                                std::to_string(debugdraw::maxFrameTextCharacters) + " characters");
+  for (const Quad& quad : quads) {
     const TextVertex a = vertex(quad.x0, quad.y0), b = vertex(quad.x1, quad.y0);
     const TextVertex c = vertex(quad.x1, quad.y1), d = vertex(quad.x0, quad.y1);
     triangles.insert(triangles.end(), {a, b, c, a, c, d});
@@ -58,6 +68,10 @@ void appendQuads(const debugdraw::Text& text, float offsetX, float offsetY, cons
 }
 
 }  // namespace
+
+std::size_t maxTextVertices() {
+  return debugdraw::maxFrameTextCharacters * kMaxQuadsPerCharacter * kVerticesPerQuad * kPassesPerText;
+}
 
 void appendText(const debugdraw::Text& text, std::vector<TextVertex>& triangles) {
   validate(text);

@@ -1,6 +1,7 @@
 #pragma once
 // Screen-space text from stb_easy_font: each glyph is a set of axis-aligned
 // quads on a one-unit grid; scaled and rounded to whole pixels they stay crisp.
+#include <cstddef>
 #include <vector>
 
 #include "debugdraw/primitives.h"
@@ -8,12 +9,23 @@
 
 namespace physdbg::render {
 
+// Each character costs up to 11 quads (about 5.5 KiB with its outline on
+// average), so both functions bound what they build: a text longer than
+// debugdraw::maxTextCharacters, or `triangles` that would outgrow the geometry
+// of debugdraw::maxFrameTextCharacters characters (glyphs and outlines), are
+// refused with std::invalid_argument. Use one `triangles` vector per frame.
+
 // Glyph quads as two triangles each, in the text's colour. Throws
-// std::invalid_argument for a non-positive or non-finite scale or position.
+// std::invalid_argument for a non-positive or non-finite scale or position,
+// or beyond the limits above.
 void appendText(const debugdraw::Text& text, std::vector<TextVertex>& triangles);
 
 // A dark outline (the glyphs offset one step in eight directions) so text reads
-// on light and dark backgrounds alike. Draw it before the glyphs.
+// on light and dark backgrounds alike. Draw it before the glyphs. Same checks.
 void appendTextOutline(const debugdraw::Text& text, std::vector<TextVertex>& triangles);
+
+// The most vertices `triangles` may hold: maxFrameTextCharacters of the
+// largest glyph (11 quads), drawn once and outlined eight times.
+std::size_t maxTextVertices();
 
 }  // namespace physdbg::render
