@@ -1,6 +1,9 @@
 #include "debugdraw/recording.h"
 
 #include <bit>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
 #include <stdexcept>
 
 namespace physdbg::debugdraw {
@@ -9,8 +12,15 @@ namespace {
 constexpr char magic[8] = {'P', 'H', 'Y', 'S', 'D', 'B', 'G', 'R'};
 constexpr std::uint32_t meshTag = 1;
 constexpr std::uint32_t frameTag = 2;
-// A chunk larger than this is corruption, not data (1000x a 100k-primitive frame).
-constexpr std::uint64_t maxChunkBytes = std::uint64_t{1} << 34;
+constexpr std::uint64_t fileHeadBytes = 12;
+constexpr std::uint64_t chunkHeadBytes = 12;
+constexpr std::uint64_t maxFrameIndex = static_cast<std::uint64_t>(std::numeric_limits<int>::max());
+// Quaternion lengths the renderer can normalise without losing the rotation.
+constexpr double minRotationNorm = 1e-6, maxRotationNorm = 1e6;
+
+[[noreturn]] void refuse(const std::string& name, const std::string& what) {
+  throw std::invalid_argument("recording '" + name + "': " + what);
+}
 
 class ByteWriter {
  public:
@@ -39,9 +49,12 @@ class ByteWriter {
   }
 };
 
+// Decodes one chunk's payload. Every count is checked against its limit and
+// against the bytes left in the payload before anything is allocated for it;
+// `context` ("frame 5, points: ") prefixes the messages.
 class ByteReader {
  public:
-  ByteReader(const std::string& bytes, const std::string& path) : bytes_(bytes), path_(path) {}
+  ByteReader(const std::string& bytes, const std::string& name) : bytes_(bytes), name_(name) {}
   std::uint32_t u32() { return static_cast<std::uint32_t>(little(4)); }
   std::uint64_t u64() { return little(8); }
   float f32() { return std::bit_cast<float>(u32()); }
@@ -60,25 +73,33 @@ class ByteReader {
   }
   std::string text() {
     const std::uint32_t size = u32();
+    if (size > maxTextCharacters)
+      fail("a text of " + std::to_string(size) + " characters, over the limit of " +
+           std::to_string(maxTextCharacters) + " per text");
     need(size);
     std::string s = bytes_.substr(offset_, size);
     offset_ += size;
     return s;
   }
-  // A count of items of at least `itemBytes` each, checked against what is left.
-  std::uint32_t count(std::size_t itemBytes) {
+  // A count of items of at least `itemBytes` each, checked against `limit` and what is left.
+  std::uint32_t count(std::size_t itemBytes, std::uint32_t limit) {
     const std::uint32_t n = u32();
-    need(static_cast<std::size_t>(n) * itemBytes);
+    if (n > limit) fail(std::to_string(n) + " items, over the limit of " + std::to_string(limit));
+    if (n * itemBytes > left())
+      fail(std::to_string(n) + " items of " + std::to_string(itemBytes) + " bytes run past the end of the chunk (" +
+           std::to_string(left()) + " bytes left)");
     return n;
   }
+  void context(const std::string& prefix) { context_ = prefix; }
   bool done() const { return offset_ == bytes_.size(); }
-  [[noreturn]] void fail(const std::string& what) const {
-    throw std::invalid_argument("recording '" + path_ + "': " + what);
-  }
+  [[noreturn]] void fail(const std::string& what) const { refuse(name_, context_ + what); }
 
  private:
+  std::size_t left() const { return bytes_.size() - offset_; }
   void need(std::size_t size) const {
-    if (bytes_.size() - offset_ < size) fail("corrupt chunk (a list runs past its end)");
+    if (left() < size)
+      fail("a value runs past the end of the chunk (" + std::to_string(size) + " bytes needed, " +
+           std::to_string(left()) + " left)");
   }
   std::uint64_t little(int count) {
     need(static_cast<std::size_t>(count));
@@ -89,9 +110,174 @@ class ByteReader {
     return value;
   }
   const std::string& bytes_;
-  const std::string& path_;
+  const std::string& name_;
+  std::string context_;
   std::size_t offset_ = 0;
 };
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// The checks behind the limits, shared by reader and writer: each item's
+// first problem as words, empty when it can be drawn. NaN fails every range.
+class ItemCheck {
+ public:
+  std::string problem;
+
+  ItemCheck& position(const Vec3& v, const char* what) {
+    for (int i = 0; i < 3; ++i) within(v[i], -maxCoordinate, maxCoordinate, what);
+    return *this;
+  }
+  ItemCheck& lengths(const Vec3& v, const char* what) {
+    for (int i = 0; i < 3; ++i) within(v[i], 0, maxCoordinate, what);
+    return *this;
+  }
+  ItemCheck& rotation(const Quat& q) {
+    const double norm = q.coeffs().allFinite() ? q.norm() : std::nan("");
+    return within(norm, minRotationNorm, maxRotationNorm, "orientation length");
+  }
+  ItemCheck& color(const Color& c) {
+    for (const float channel : {c.r, c.g, c.b, c.a}) finite(channel, "colour");
+    return *this;
+  }
+  ItemCheck& finite(double value, const char* what) {
+    if (problem.empty() && !std::isfinite(value)) problem = std::string(what) + " is " + number(value);
+    return *this;
+  }
+  ItemCheck& within(double value, double low, double high, const char* what) {
+    if (problem.empty() && !(value >= low && value <= high))
+      problem = std::string(what) + " " + number(value) + " is outside " + number(low) + ".." + number(high);
+    return *this;
+  }
+};
+
+template <typename Box>
+std::string problemOfBox(const Box& b) {
+  return ItemCheck()
+      .position(b.center, "centre")
+      .rotation(b.orientation)
+      .lengths(b.halfExtents, "half extent")
+      .color(b.color)
+      .problem;
+}
+
+std::string problemOf(const SolidBox& b) { return problemOfBox(b); }
+std::string problemOf(const WireBox& b) { return problemOfBox(b); }
+
+std::string problemOf(const SolidSphere& s) {
+  return ItemCheck()
+      .position(s.center, "centre")
+      .rotation(s.orientation)
+      .within(s.radius, 0, maxCoordinate, "radius")
+      .color(s.color)
+      .problem;
+}
+
+std::string problemOf(const SolidCapsule& c) {
+  return ItemCheck()
+      .position(c.center, "centre")
+      .rotation(c.orientation)
+      .within(c.radius, 0, maxCoordinate, "radius")
+      .within(c.halfHeight, 0, maxCoordinate, "half height")
+      .color(c.color)
+      .problem;
+}
+
+std::string problemOf(const SolidMesh& m) {
+  if (!m.mesh) return "solid mesh without a mesh";
+  return ItemCheck().position(m.center, "centre").rotation(m.orientation).color(m.color).problem;
+}
+
+template <typename Segment>
+std::string problemOfSegment(const Segment& s) {
+  return ItemCheck().position(s.from, "start").position(s.to, "end").color(s.color).problem;
+}
+
+std::string problemOf(const Line& l) { return problemOfSegment(l); }
+std::string problemOf(const Arrow& a) { return problemOfSegment(a); }
+
+std::string problemOf(const Point& p) {
+  return ItemCheck()
+      .position(p.position, "position")
+      .within(p.sizePixels, 0, maxPointPixels, "size in pixels")
+      .color(p.color)
+      .problem;
+}
+
+std::string problemOf(const Text& t) {
+  if (t.text.size() > maxTextCharacters)
+    return std::to_string(t.text.size()) + " characters, over the limit of " + std::to_string(maxTextCharacters) +
+           " per text";
+  return ItemCheck()
+      .within(t.x, -maxTextPixels, maxTextPixels, "x")
+      .within(t.y, -maxTextPixels, maxTextPixels, "y")
+      .within(t.scale, minTextScale, maxTextScale, "scale")
+      .color(t.color)
+      .problem;
+}
+
+template <typename Item>
+std::string listProblem(const std::vector<Item>& items, const char* list) {
+  if (items.size() > maxListItems)
+    return std::string(list) + ": " + std::to_string(items.size()) + " items, over the limit of " +
+           std::to_string(maxListItems);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string problem = problemOf(items[i]);
+    if (!problem.empty()) return std::string(list) + " item " + std::to_string(i) + ": " + problem;
+  }
+  return {};
+}
+
+std::string viewProblem(const View& view) {
+  const std::string problem = ItemCheck()
+                                  .position(view.eye, "eye")
+                                  .position(view.target, "target")
+                                  .position(view.up, "up")
+                                  .within(view.fovYDegrees, 0.001, 179.999, "vertical field of view")
+                                  .within(view.orthoHeight, 0, maxCoordinate, "orthographic height")
+                                  .problem;
+  return problem.empty() ? problem : "view: " + problem;
+}
+
+std::string textTotalProblem(const std::vector<Text>& texts) {
+  std::size_t characters = 0;
+  for (const Text& text : texts) characters += text.text.size();
+  if (characters <= maxFrameTextCharacters) return {};
+  return std::to_string(characters) + " characters of text, over the limit of " +
+         std::to_string(maxFrameTextCharacters) + " per frame";
+}
+
+// The frame's first value beyond the limits, named by frame, list and item.
+std::string frameProblem(const RecordedFrame& recorded) {
+  const Frame& f = recorded.frame;
+  for (const std::string& problem :
+       {viewProblem(recorded.view), listProblem(f.boxes, "solid boxes"), listProblem(f.spheres, "solid spheres"),
+        listProblem(f.capsules, "capsules"), listProblem(f.meshes, "solid meshes"),
+        listProblem(f.wireBoxes, "wire boxes"), listProblem(f.lines, "lines"), listProblem(f.points, "points"),
+        listProblem(f.arrows, "arrows"), listProblem(f.texts, "texts"), textTotalProblem(f.texts)})
+    if (!problem.empty()) return "frame " + std::to_string(recorded.index) + ", " + problem;
+  return {};
+}
+
+std::string meshProblem(const TriangleMesh& mesh) {
+  const std::string prefix = "mesh " + std::to_string(mesh.id) + ": ";
+  if (mesh.vertices.size() > maxMeshVertices)
+    return prefix + std::to_string(mesh.vertices.size()) + " vertices, over the limit of " +
+           std::to_string(maxMeshVertices);
+  if (mesh.indices.size() > maxMeshIndices)
+    return prefix + std::to_string(mesh.indices.size()) + " indices, over the limit of " +
+           std::to_string(maxMeshIndices);
+  if (mesh.indices.size() % 3 != 0)
+    return prefix + std::to_string(mesh.indices.size()) + " indices, not three per triangle";
+  for (const std::uint32_t index : mesh.indices)
+    if (index >= mesh.vertices.size()) return prefix + "index " + std::to_string(index) + " out of range";
+  ItemCheck check;
+  for (const Eigen::Vector3f& vertex : mesh.vertices) check.position(vertex.cast<double>(), "vertex");
+  return check.problem.empty() ? check.problem : prefix + check.problem;
+}
 
 void writeView(ByteWriter& out, const View& view) {
   out.vec3(view.eye);
@@ -103,12 +289,15 @@ void writeView(ByteWriter& out, const View& view) {
 }
 
 View readView(ByteReader& in) {
+  in.context("view: ");
   View view;
   view.eye = in.vec3();
   view.target = in.vec3();
   view.up = in.vec3();
   view.fovYDegrees = in.f64();
-  view.orthographic = in.u32() != 0;
+  const std::uint32_t orthographic = in.u32();
+  if (orthographic > 1) in.fail("orthographic flag " + std::to_string(orthographic) + " is neither 0 nor 1");
+  view.orthographic = orthographic == 1;
   view.orthoHeight = in.f64();
   return view;
 }
@@ -127,16 +316,18 @@ std::string encodeMesh(const TriangleMesh& mesh) {
 std::shared_ptr<const TriangleMesh> decodeMesh(ByteReader& in) {
   auto mesh = std::make_shared<TriangleMesh>();
   mesh->id = in.u64();
-  mesh->vertices.resize(in.count(12));
+  in.context("mesh " + std::to_string(mesh->id) + ", vertices: ");
+  mesh->vertices.resize(in.count(12, maxMeshVertices));
   for (Eigen::Vector3f& v : mesh->vertices) {
     const float x = in.f32(), y = in.f32(), z = in.f32();
     v = {x, y, z};
   }
-  mesh->indices.resize(in.count(4));
-  for (std::uint32_t& index : mesh->indices) {
-    index = in.u32();
-    if (index >= mesh->vertices.size()) in.fail("mesh index out of range");
-  }
+  in.context("mesh " + std::to_string(mesh->id) + ", indices: ");
+  mesh->indices.resize(in.count(4, maxMeshIndices));
+  for (std::uint32_t& index : mesh->indices) index = in.u32();
+  in.context("");
+  if (!in.done()) in.fail("mesh " + std::to_string(mesh->id) + " has trailing bytes");
+  if (const std::string problem = meshProblem(*mesh); !problem.empty()) in.fail(problem);
   return mesh;
 }
 
@@ -164,8 +355,10 @@ std::string encodeFrame(const RecordedFrame& recorded) {
 }
 
 template <typename Item, typename Decode>
-void readList(ByteReader& in, std::size_t itemBytes, std::vector<Item>& items, Decode&& decode) {
-  items.resize(in.count(itemBytes));
+void readList(ByteReader& in, const RecordedFrame& out, const char* list, std::size_t itemBytes,
+              std::vector<Item>& items, Decode&& decode) {
+  in.context("frame " + std::to_string(out.index) + ", " + list + ": ");
+  items.resize(in.count(itemBytes, maxListItems));
   for (Item& item : items) decode(item);
 }
 
@@ -175,24 +368,27 @@ void decodeFrame(ByteReader& in, const std::map<std::uint64_t, std::shared_ptr<c
   Frame& f = out.frame;
   f.clear();
   // Exact item sizes (texts: without their characters) bound each count by the bytes left.
-  readList(in, 96, f.boxes, [&](SolidBox& b) { b.center = in.vec3(), b.orientation = in.quat(), b.halfExtents = in.vec3(), b.color = in.color(); });
-  readList(in, 80, f.spheres, [&](SolidSphere& s) { s.center = in.vec3(), s.orientation = in.quat(), s.radius = in.f64(), s.color = in.color(); });
-  readList(in, 88, f.capsules, [&](SolidCapsule& c) {
+  readList(in, out, "solid boxes", 96, f.boxes, [&](SolidBox& b) { b.center = in.vec3(), b.orientation = in.quat(), b.halfExtents = in.vec3(), b.color = in.color(); });
+  readList(in, out, "solid spheres", 80, f.spheres, [&](SolidSphere& s) { s.center = in.vec3(), s.orientation = in.quat(), s.radius = in.f64(), s.color = in.color(); });
+  readList(in, out, "capsules", 88, f.capsules, [&](SolidCapsule& c) {
     c.center = in.vec3(), c.orientation = in.quat(), c.radius = in.f64(), c.halfHeight = in.f64(), c.color = in.color();
   });
-  readList(in, 80, f.meshes, [&](SolidMesh& m) {
+  readList(in, out, "solid meshes", 80, f.meshes, [&](SolidMesh& m) {
     m.center = in.vec3(), m.orientation = in.quat();
-    const auto found = meshes.find(in.u64());
-    if (found == meshes.end()) in.fail("frame " + std::to_string(out.index) + " uses a mesh that was never defined");
+    const std::uint64_t id = in.u64();
+    const auto found = meshes.find(id);
+    if (found == meshes.end()) in.fail("mesh " + std::to_string(id) + " was never defined");
     m.mesh = found->second;
     m.color = in.color();
   });
-  readList(in, 96, f.wireBoxes, [&](WireBox& b) { b.center = in.vec3(), b.orientation = in.quat(), b.halfExtents = in.vec3(), b.color = in.color(); });
-  readList(in, 64, f.lines, [&](Line& l) { l.from = in.vec3(), l.to = in.vec3(), l.color = in.color(); });
-  readList(in, 44, f.points, [&](Point& p) { p.position = in.vec3(), p.sizePixels = in.f32(), p.color = in.color(); });
-  readList(in, 64, f.arrows, [&](Arrow& a) { a.from = in.vec3(), a.to = in.vec3(), a.color = in.color(); });
-  readList(in, 32, f.texts, [&](Text& t) { t.x = in.f32(), t.y = in.f32(), t.scale = in.f32(), t.text = in.text(), t.color = in.color(); });
+  readList(in, out, "wire boxes", 96, f.wireBoxes, [&](WireBox& b) { b.center = in.vec3(), b.orientation = in.quat(), b.halfExtents = in.vec3(), b.color = in.color(); });
+  readList(in, out, "lines", 64, f.lines, [&](Line& l) { l.from = in.vec3(), l.to = in.vec3(), l.color = in.color(); });
+  readList(in, out, "points", 44, f.points, [&](Point& p) { p.position = in.vec3(), p.sizePixels = in.f32(), p.color = in.color(); });
+  readList(in, out, "arrows", 64, f.arrows, [&](Arrow& a) { a.from = in.vec3(), a.to = in.vec3(), a.color = in.color(); });
+  readList(in, out, "texts", 32, f.texts, [&](Text& t) { t.x = in.f32(), t.y = in.f32(), t.scale = in.f32(), t.text = in.text(), t.color = in.color(); });
+  in.context("");
   if (!in.done()) in.fail("frame " + std::to_string(out.index) + " has trailing bytes");
+  if (const std::string problem = frameProblem(out); !problem.empty()) in.fail(problem);
 }
 
 }  // namespace
@@ -206,6 +402,9 @@ RecordingWriter::RecordingWriter(const std::string& path) : path_(path), file_(p
 }
 
 void RecordingWriter::writeChunk(std::uint32_t tag, const std::string& payload) {
+  if (payload.size() > maxChunkBytes)
+    refuse(path_, "cannot write a chunk of " + std::to_string(payload.size()) + " bytes, over the limit of " +
+                      std::to_string(maxChunkBytes));
   ByteWriter head;
   head.u32(tag);
   head.u64(payload.size());
@@ -213,11 +412,18 @@ void RecordingWriter::writeChunk(std::uint32_t tag, const std::string& payload) 
   file_.write(payload.data(), static_cast<std::streamsize>(payload.size()));
 }
 
+// Refuses what a reader would refuse, so every recording written can be read back.
 void RecordingWriter::write(const RecordedFrame& recorded) {
   if (recorded.index < 0) throw std::invalid_argument("recording: negative frame index");
-  for (const SolidMesh& mesh : recorded.frame.meshes) {
+  for (const SolidMesh& mesh : recorded.frame.meshes)
     if (!mesh.mesh) throw std::invalid_argument("recording: solid mesh without a mesh");
-    if (meshesWritten_.insert(mesh.mesh->id).second) writeChunk(meshTag, encodeMesh(*mesh.mesh));
+  if (const std::string problem = frameProblem(recorded); !problem.empty())
+    refuse(path_, "cannot write " + problem);
+  for (const SolidMesh& mesh : recorded.frame.meshes) {
+    if (meshesWritten_.contains(mesh.mesh->id)) continue;
+    if (const std::string problem = meshProblem(*mesh.mesh); !problem.empty()) refuse(path_, "cannot write " + problem);
+    writeChunk(meshTag, encodeMesh(*mesh.mesh));
+    meshesWritten_.insert(mesh.mesh->id);
   }
   writeChunk(frameTag, encodeFrame(recorded));
 }
@@ -228,57 +434,127 @@ void RecordingWriter::close() {
   file_.close();
 }
 
-RecordingReader::RecordingReader(const std::string& path) : path_(path), file_(path, std::ios::binary) {
-  if (!file_) throw std::invalid_argument("cannot open recording '" + path + "'");
-  std::string header(12, '\0');
-  file_.read(header.data(), 12);
-  if (file_.gcount() != 12 || header.compare(0, 8, magic, 8) != 0)
-    throw std::invalid_argument("'" + path + "' is not a physdbg recording");
+RecordingReader::RecordingReader(const std::string& path)
+    : name_(path), stream_(std::make_unique<std::ifstream>(path, std::ios::binary)) {
+  if (!*stream_) throw std::invalid_argument("cannot open recording '" + path + "'");
+  readHeader();
+}
+
+RecordingReader::RecordingReader(std::unique_ptr<std::istream> stream, const std::string& name)
+    : name_(name), stream_(std::move(stream)) {
+  if (!stream_ || !*stream_) throw std::invalid_argument("cannot read recording '" + name + "'");
+  readHeader();
+}
+
+void RecordingReader::fail(const std::string& what) const { refuse(name_, what); }
+
+// Learns the length first: every later size is checked against what remains.
+void RecordingReader::readHeader() {
+  stream_->seekg(0, std::ios::end);
+  const std::streamoff end = stream_->tellg();
+  stream_->seekg(0, std::ios::beg);
+  if (end < 0 || !*stream_) fail("cannot find its size (not a seekable file)");
+  length_ = static_cast<std::uint64_t>(end);
+  std::string header(fileHeadBytes, '\0');
+  if (length_ >= fileHeadBytes) stream_->read(header.data(), static_cast<std::streamsize>(fileHeadBytes));
+  if (length_ < fileHeadBytes || static_cast<std::uint64_t>(stream_->gcount()) != fileHeadBytes ||
+      header.compare(0, 8, magic, 8) != 0)
+    throw std::invalid_argument("'" + name_ + "' is not a physdbg recording");
+  offset_ = fileHeadBytes;
   const std::string versionBytes = header.substr(8);
-  ByteReader reader(versionBytes, path_);
-  const std::uint32_t version = reader.u32();
+  const std::uint32_t version = ByteReader(versionBytes, name_).u32();
   if (version == 0 || version > recordingVersion)
-    reader.fail("version " + std::to_string(version) + " (this physdbg reads up to " +
-                std::to_string(recordingVersion) + ")");
+    fail("version " + std::to_string(version) + " (this physdbg reads up to " + std::to_string(recordingVersion) +
+         ")");
+}
+
+std::string RecordingReader::readBytes(std::uint64_t count) {
+  if (count > remaining()) fail("internal: read past the end at byte offset " + std::to_string(offset_));
+  std::string bytes(count, '\0');
+  stream_->read(bytes.data(), static_cast<std::streamsize>(count));
+  if (static_cast<std::uint64_t>(stream_->gcount()) != count)
+    fail("truncated at byte offset " + std::to_string(offset_ + stream_->gcount()) + " (the file shrank?)");
+  offset_ += count;
+  return bytes;
+}
+
+void RecordingReader::skip(std::uint64_t count) {
+  if (count > remaining()) fail("internal: seek past the end at byte offset " + std::to_string(offset_));
+  stream_->seekg(static_cast<std::streamoff>(count), std::ios::cur);
+  if (!*stream_) fail("cannot seek to byte offset " + std::to_string(offset_ + count));
+  offset_ += count;
+}
+
+// The size a chunk declares is checked against the file before anything is
+// read, allocated or skipped for it.
+RecordingReader::ChunkHead RecordingReader::readChunkHead() {
+  ChunkHead head;
+  head.offset = offset_;
+  if (remaining() < chunkHeadBytes)
+    fail("truncated chunk header at byte offset " + std::to_string(offset_) + ": " + std::to_string(chunkHeadBytes) +
+         " bytes needed, " + std::to_string(remaining()) + " remain");
+  const std::string bytes = readBytes(chunkHeadBytes);
+  ByteReader reader(bytes, name_);
+  head.tag = reader.u32();
+  head.size = reader.u64();
+  if (head.size > remaining())
+    fail("truncated chunk at byte offset " + std::to_string(head.offset) + ": declares " + std::to_string(head.size) +
+         " bytes, " + std::to_string(remaining()) + " remain");
+  if (head.size > maxChunkBytes)
+    fail("chunk at byte offset " + std::to_string(head.offset) + " declares " + std::to_string(head.size) +
+         " bytes, over the limit of " + std::to_string(maxChunkBytes));
+  return head;
+}
+
+bool RecordingReader::readFrame(const ChunkHead& head, RecordedFrame& out, int first, int last) {
+  const std::string where = "frame chunk at byte offset " + std::to_string(head.offset);
+  if (head.size < 4) fail(where + " is " + std::to_string(head.size) + " bytes, too short for a frame index");
+  const std::string indexBytes = readBytes(4);
+  const std::uint64_t index = ByteReader(indexBytes, name_).u32();
+  if (index > maxFrameIndex) fail(where + ": frame index " + std::to_string(index) + " is over " +
+                                  std::to_string(maxFrameIndex));
+  const int frameIndex = static_cast<int>(index);
+  if (frameIndex < first || frameIndex >= last) {
+    skip(head.size - 4);
+    return false;
+  }
+  const std::string payload = readBytes(head.size - 4);
+  ByteReader reader(payload, name_);
+  out.index = frameIndex;
+  decodeFrame(reader, meshes_, out);
+  return true;
+}
+
+void RecordingReader::readMesh(const ChunkHead& head) {
+  const std::string payload = readBytes(head.size);
+  ByteReader reader(payload, name_);
+  std::shared_ptr<const TriangleMesh> mesh = decodeMesh(reader);
+  if (meshes_.contains(mesh->id))
+    fail("mesh chunk at byte offset " + std::to_string(head.offset) + " defines mesh " + std::to_string(mesh->id) +
+         " a second time");
+  meshes_[mesh->id] = std::move(mesh);
 }
 
 bool RecordingReader::next(RecordedFrame& out, int first, int last) {
-  while (true) {
-    std::string head(12, '\0');
-    file_.read(head.data(), 12);
-    if (file_.gcount() == 0) return false;
-    ByteReader headReader(head, path_);
-    if (file_.gcount() != 12) headReader.fail("truncated chunk header");
-    const std::uint32_t tag = headReader.u32();
-    const std::uint64_t size = headReader.u64();
-    if (size > maxChunkBytes) headReader.fail("chunk of " + std::to_string(size) + " bytes");
-    if (tag == frameTag && size >= 4) {
-      std::string index(4, '\0');
-      file_.read(index.data(), 4);
-      ByteReader indexReader(index, path_);
-      if (file_.gcount() != 4) indexReader.fail("truncated frame");
-      const int frameIndex = static_cast<int>(indexReader.u32());
-      if (frameIndex < first || frameIndex >= last) {
-        file_.seekg(static_cast<std::streamoff>(size - 4), std::ios::cur);
-        continue;
-      }
-      std::string payload(size - 4, '\0');
-      file_.read(payload.data(), static_cast<std::streamsize>(payload.size()));
-      ByteReader reader(payload, path_);
-      if (static_cast<std::uint64_t>(file_.gcount()) != size - 4) reader.fail("truncated frame");
-      out.index = frameIndex;
-      decodeFrame(reader, meshes_, out);
-      return true;
-    }
-    std::string payload(size, '\0');
-    file_.read(payload.data(), static_cast<std::streamsize>(size));
-    ByteReader reader(payload, path_);
-    if (static_cast<std::uint64_t>(file_.gcount()) != size) reader.fail("truncated chunk");
-    if (tag == meshTag) {
-      std::shared_ptr<const TriangleMesh> mesh = decodeMesh(reader);
-      meshes_[mesh->id] = std::move(mesh);
+  while (remaining() > 0) {
+    const ChunkHead head = readChunkHead();
+    if (head.tag == frameTag) {
+      if (readFrame(head, out, first, last)) return true;
+    } else if (head.tag == meshTag) {
+      readMesh(head);
+    } else {
+      skip(head.size);
     }
   }
+  return false;
+}
+
+std::vector<RecordedFrame> readRecordingBytes(std::string bytes, const std::string& name) {
+  RecordingReader reader(std::make_unique<std::istringstream>(std::move(bytes), std::ios::binary), name);
+  std::vector<RecordedFrame> frames;
+  RecordedFrame frame;
+  while (reader.next(frame)) frames.push_back(frame);
+  return frames;
 }
 
 }  // namespace physdbg::debugdraw
