@@ -1,6 +1,8 @@
 // PNG encoding with libpng's full API (the simplified API cannot choose the
-// filter or level) and decoding with its simplified API. libpng reports errors
-// by longjmp, so the jump target lives in a function that owns nothing.
+// filter or level) and decoding with its simplified API, which catches
+// libpng's longjmps itself and converts every PNG format to RGBA. For writing,
+// libpng reports errors by longjmp, so the jump target lives in a function
+// that owns nothing.
 #include <png.h>
 
 #include <cerrno>
@@ -56,6 +58,42 @@ void validate(const Image& image, int compressionLevel) {
     throw std::invalid_argument("writePng: compression level must be in 0..9");
 }
 
+// Owns libpng's decoding state on every path out: libpng frees it after its
+// own errors, this frees it after ours (the size limit, a failed allocation).
+struct PngDecoder {
+  png_image image;
+  PngDecoder() {
+    std::memset(&image, 0, sizeof image);
+    image.version = PNG_IMAGE_VERSION;
+  }
+  ~PngDecoder() { png_image_free(&image); }
+  PngDecoder(const PngDecoder&) = delete;
+  PngDecoder& operator=(const PngDecoder&) = delete;
+};
+
+// Checked in 64 bits from the header alone, before the pixels are allocated.
+void checkSize(const png_image& header, const std::string& name) {
+  const std::uint64_t pixels = std::uint64_t{header.width} * header.height;
+  if (header.width <= maxImageSide && header.height <= maxImageSide && pixels <= maxImagePixels) return;
+  throw std::runtime_error("cannot read PNG '" + name + "': " + std::to_string(header.width) + "x" +
+                           std::to_string(header.height) + " pixels is over the limit of " +
+                           std::to_string(maxImageSide) + " a side and " + std::to_string(maxImagePixels) +
+                           " in all");
+}
+
+Image finishRead(png_image& decoder, const std::string& name) {
+  checkSize(decoder, name);
+  decoder.format = PNG_FORMAT_RGBA;
+  decoder.flags |= PNG_IMAGE_FLAG_16BIT_sRGB;  // else 16-bit files are taken as linear and brightened
+  Image image;
+  image.width = static_cast<int>(decoder.width);
+  image.height = static_cast<int>(decoder.height);
+  image.rgba.resize(static_cast<std::size_t>(decoder.width) * decoder.height * 4);
+  if (!png_image_finish_read(&decoder, nullptr, image.rgba.data(), 0, nullptr))
+    throw std::runtime_error("cannot decode PNG '" + name + "': " + decoder.message);
+  return image;
+}
+
 }  // namespace
 
 void writePng(const std::string& path, const Image& image, int compressionLevel) {
@@ -76,21 +114,17 @@ void writePng(const std::string& path, const Image& image, int compressionLevel)
 }
 
 Image readPng(const std::string& path) {
-  png_image decoder;
-  std::memset(&decoder, 0, sizeof(decoder));
-  decoder.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&decoder, path.c_str()))
-    throw std::runtime_error("cannot read PNG '" + path + "': " + decoder.message);
-  decoder.format = PNG_FORMAT_RGBA;
-  Image image;
-  image.width = static_cast<int>(decoder.width);
-  image.height = static_cast<int>(decoder.height);
-  image.rgba.resize(PNG_IMAGE_SIZE(decoder));
-  if (!png_image_finish_read(&decoder, nullptr, image.rgba.data(), 0, nullptr)) {
-    png_image_free(&decoder);
-    throw std::runtime_error("cannot decode PNG '" + path + "': " + decoder.message);
-  }
-  return image;
+  PngDecoder decoder;
+  if (!png_image_begin_read_from_file(&decoder.image, path.c_str()))
+    throw std::runtime_error("cannot read PNG '" + path + "': " + decoder.image.message);
+  return finishRead(decoder.image, path);
+}
+
+Image readPngBytes(std::string_view bytes, const std::string& name) {
+  PngDecoder decoder;
+  if (!png_image_begin_read_from_memory(&decoder.image, bytes.data(), bytes.size()))
+    throw std::runtime_error("cannot read PNG '" + name + "': " + decoder.image.message);
+  return finishRead(decoder.image, name);
 }
 
 }  // namespace physdbg::render
