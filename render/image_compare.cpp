@@ -84,6 +84,8 @@ void forEachPixel(const Image& expected, const Image& actual, const CompareOptio
     }
 }
 
+std::string sizeText(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
+
 std::uint8_t clampLevel(double value) { return static_cast<std::uint8_t>(std::clamp(value, 0.0, 255.0)); }
 
 }  // namespace
@@ -93,6 +95,8 @@ CompareResult compareImages(const Image& expected, const Image& actual, const Co
   validate(actual, "actual");
   validate(options);
   CompareResult result;
+  result.expectedWidth = expected.width, result.expectedHeight = expected.height;
+  result.actualWidth = actual.width, result.actualHeight = actual.height;
   result.sizeMatches = expected.width == actual.width && expected.height == actual.height;
   if (result.sizeMatches && expected.rgba == actual.rgba) {  // the exact hash-like check comes first
     result.identical = result.passed = true;
@@ -114,6 +118,10 @@ Image diffImage(const Image& expected, const Image& actual, const CompareOptions
   Image diff;
   diff.width = std::max(expected.width, actual.width);
   diff.height = std::max(expected.height, actual.height);
+  if (static_cast<std::uint64_t>(diff.width) * static_cast<std::uint64_t>(diff.height) > maxImagePixels)
+    throw std::invalid_argument("diffImage: the union of " + sizeText(expected.width, expected.height) + " and " +
+                                sizeText(actual.width, actual.height) + " is over the limit of " +
+                                std::to_string(maxImagePixels) + " pixels");
   diff.rgba.assign(static_cast<std::size_t>(diff.width) * diff.height * 4, 255);
   forEachPixel(expected, actual, options, [&](int x, int y, PixelVerdict verdict, int difference) {
     std::uint8_t* out = diff.rgba.data() + (static_cast<std::size_t>(y) * diff.width + x) * 4;
@@ -141,10 +149,15 @@ std::string describeComparison(const CompareResult& result, const CompareOptions
     std::snprintf(line, sizeof line, "identical: %zu pixels, same bytes", result.pixelCount);
     return line;
   }
+  const std::string sizes = result.sizeMatches ? ""
+                                               : " (sizes differ: expected " +
+                                                     sizeText(result.expectedWidth, result.expectedHeight) +
+                                                     ", actual " + sizeText(result.actualWidth, result.actualHeight) +
+                                                     ")";
   std::snprintf(line, sizeof line,
                 "%s%s: %zu of %zu pixels differ by more than %d levels (largest %d); %zu of them within %d px of a "
                 "match; %zu different = %.4f%% (allowed %.4f%%)",
-                result.passed ? "match" : "DIFFERENT", result.sizeMatches ? "" : " (sizes differ)",
+                result.passed ? "match" : "DIFFERENT", sizes.c_str(),
                 result.aboveThreshold, result.pixelCount, options.channelThreshold, result.maxChannelDifference,
                 result.shifted, options.neighbourhoodRadius, result.different, 100.0 * result.differentShare(),
                 100.0 * options.maxDifferentShare);

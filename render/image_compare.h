@@ -31,6 +31,7 @@ struct CompareOptions {
 struct CompareResult {
   bool identical = false;   // same size and same bytes
   bool sizeMatches = false;
+  int expectedWidth = 0, expectedHeight = 0, actualWidth = 0, actualHeight = 0;
   bool passed = false;
   std::size_t pixelCount = 0;      // of the union of both images' extents
   std::size_t aboveThreshold = 0;  // pixels with a channel difference above the threshold
@@ -42,19 +43,22 @@ struct CompareResult {
 
 // Throws std::invalid_argument for options out of range (threshold outside
 // 0..255, share outside 0..1 or NaN, radius outside 0..8) or an image whose
-// byte count does not match its size. Images of different sizes do not match:
-// pixels outside either image count as different.
+// byte count does not match its size. Images of different sizes never match
+// (a golden test still wants to see where they differ): pixels outside either
+// image count as different, and every read is inside its image.
 CompareResult compareImages(const Image& expected, const Image& actual, const CompareOptions& options = {});
 
 // A picture of the differences, the size of the union of both extents: the
 // expected image dimmed to grey, differences below the threshold in amplified
 // blue, shifted pixels in yellow, different pixels in red. Same validation as
-// compareImages.
+// compareImages; also refuses a union of extents over maxImagePixels (a wide
+// and a tall image), which could be far larger than either image.
 Image diffImage(const Image& expected, const Image& actual, const CompareOptions& options = {});
 
 // One line of figures for people: "identical: ..." or "match/DIFFERENT: N of
 // M pixels differ by more than T levels (largest L); S of them within R px of
-// a match; D different = P% (allowed Q%)".
+// a match; D different = P% (allowed Q%)", with "(sizes differ: expected WxH,
+// actual WxH)" after the verdict when they do.
 std::string describeComparison(const CompareResult& result, const CompareOptions& options = {});
 
 }  // namespace physdbg::render

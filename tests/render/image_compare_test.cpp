@@ -2,7 +2,10 @@
 // threshold, one-pixel line shifts, vanished lines, shares, sizes, bad input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "render/image_compare.h"
 
@@ -84,6 +87,28 @@ TEST(ImageCompare, DifferentSizesNeverMatch) {
   EXPECT_EQ(result.different, 64u);  // the missing row
   EXPECT_EQ(diffImage(blank(64, 48), blank(60, 50)).width, 64);
   EXPECT_EQ(diffImage(blank(64, 48), blank(60, 50)).height, 50);
+}
+
+// Sizes that differ are reported as such, every read stays inside its image
+// (empty, one pixel, a row, a column), and a diff whose union of extents would
+// be huge is refused rather than allocated.
+TEST(ImageCompare, SizeMismatchIsAClearErrorNeverAnOutOfBoundsRead) {
+  const CompareResult result = compareImages(blank(64, 48), blank(64, 47));
+  EXPECT_FALSE(result.passed);
+  const std::string figures = describeComparison(result);
+  EXPECT_NE(figures.find("DIFFERENT (sizes differ: expected 64x48, actual 64x47)"), std::string::npos) << figures;
+  const std::vector<Image> shapes = {blank(0, 0), blank(1, 1), blank(64, 1), blank(1, 48), blank(64, 48)};
+  for (const Image& expected : shapes)
+    for (const Image& actual : shapes) {
+      const CompareResult pair = compareImages(expected, actual);
+      const std::size_t width = std::max(expected.width, actual.width), height = std::max(expected.height, actual.height);
+      EXPECT_EQ(pair.pixelCount, width * height);
+      EXPECT_EQ(pair.passed, expected.width == actual.width && expected.height == actual.height);
+      const Image diff = diffImage(expected, actual);
+      EXPECT_EQ(diff.rgba.size(), width * height * 4);
+    }
+  const Image wide = blank(static_cast<int>(maxImageSide) + 1, 1), tall = blank(1, 8193);  // union over maxImagePixels
+  EXPECT_THROW(diffImage(wide, tall), std::invalid_argument);
 }
 
 TEST(ImageCompare, BadInputThrows) {
