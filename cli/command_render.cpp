@@ -1,7 +1,10 @@
+// physdbg render: simulates a scene, writes its frames as PNGs and, with
+// --video, encodes them with ffmpeg.
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <iostream>
+#include <optional>
+#include <stdexcept>
 #include <thread>
 
 #include "cli/arguments.h"
@@ -11,6 +14,7 @@
 #include "cli/progress_bar.h"
 #include "cli/scene_frames.h"
 #include "render/renderer.h"
+#include "reports/child_process.h"
 #include "scenes/scene.h"
 
 namespace physdbg::cli {
@@ -20,15 +24,41 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-bool ffmpegAvailable() { return std::system("command -v ffmpeg >/dev/null 2>&1") == 0; }
+// The image2 demuxer reads '%' as a pattern: a literal one is written "%%".
+std::string escapePercent(const std::string& text) {
+  std::string escaped;
+  for (const char c : text) escaped += c == '%' ? std::string("%%") : std::string(1, c);
+  return escaped;
+}
 
-void encodeVideo(const std::string& directory, const std::string& video, double framesPerSecond, int firstFrame) {
-  char command[2048];
-  std::snprintf(command, sizeof command,
-                "ffmpeg -y -loglevel error -framerate %.6g -start_number %d -i '%s/frame_%%05d.png' -c:v libx264 "
-                "-pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' '%s'",
-                framesPerSecond, firstFrame, directory.c_str(), video.c_str());
-  if (std::system(command) != 0) throw std::runtime_error("ffmpeg failed to write '" + video + "'");
+// ffmpeg as an argument vector (reports/child_process.h): no shell sees the
+// folder or the video path. "file:" makes ffmpeg take each path literally: not
+// as a protocol ("http:..."), nor as an option when it starts with '-'.
+ChildCommand videoCommand(const std::string& ffmpeg, const std::string& directory, const std::string& video,
+                          double framesPerSecond, int firstFrame) {
+  char rate[32];
+  std::snprintf(rate, sizeof rate, "%.6g", framesPerSecond);
+  ChildCommand command;
+  command.program = ffmpeg;
+  command.arguments = {"-nostdin", "-y", "-loglevel", "error", "-framerate", rate, "-start_number",
+                       std::to_string(firstFrame), "-f", "image2", "-i",
+                       "file:" + escapePercent(directory) + "/frame_%05d.png", "-c:v", "libx264", "-pix_fmt",
+                       "yuv420p", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "file:" + video};
+  return command;
+}
+
+void encodeVideo(const std::string& ffmpeg, const std::string& directory, const std::string& video,
+                 double framesPerSecond, int firstFrame) {
+  const ChildExit exit = runChild(videoCommand(ffmpeg, directory, video, framesPerSecond, firstFrame));
+  if (!exit.succeeded()) throw std::runtime_error("ffmpeg failed to write '" + video + "' (" + exit.describe() + ")");
+}
+
+// Finds ffmpeg on PATH before any frame is drawn.
+std::string findFfmpeg() {
+  const std::optional<std::string> ffmpeg = findExecutable("ffmpeg");
+  if (!ffmpeg)
+    throw UsageError("--video: ffmpeg is not installed (apt-get install ffmpeg); the PNG frames need no ffmpeg");
+  return *ffmpeg;
 }
 
 }  // namespace
@@ -53,8 +83,7 @@ int runRender(const std::vector<std::string>& args) {
   const ViewOptions options = readViewOptions(*parsed, scene);
   const std::string outputDirectory = parsed->value("--output", "out/" + scene.name);
   const std::string video = parsed->value("--video");
-  if (!video.empty() && !ffmpegAvailable())
-    throw UsageError("--video: ffmpeg is not installed (apt-get install ffmpeg); the PNG frames need no ffmpeg");
+  const std::string ffmpeg = !video.empty() ? findFfmpeg() : "";
   prepareOutputDirectory(outputDirectory);
 
   SceneFrames frames(scene, options);
@@ -83,8 +112,8 @@ int runRender(const std::vector<std::string>& args) {
   std::printf("per frame: simulate %.3f ms, draw %.3f ms, PNG encode %.3f ms (on %u worker threads), wall %.3f ms\n",
               1e3 * frames.simulateSeconds() / count, 1e3 * (frames.drawSeconds() + drawSeconds) / count,
               1e3 * writers.encodeSeconds() / count, cores - 1, 1e3 * wall / count);
-  if (!video.empty()) {
-    encodeVideo(outputDirectory, video, 1.0 / (scene.world.dt * options.stepsPerFrame), options.frames.first);
+  if (!ffmpeg.empty()) {
+    encodeVideo(ffmpeg, outputDirectory, video, 1.0 / (scene.world.dt * options.stepsPerFrame), options.frames.first);
     std::printf("wrote video %s\n", video.c_str());
   }
   for (const NumericalFault& fault : frames.world().numericalFaults())

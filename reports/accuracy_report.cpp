@@ -2,12 +2,12 @@
 // it is on the PATH; without it the CSV files still carry every figure.
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <stdexcept>
 
 #include "reports/accuracy_report.h"
+#include "reports/child_process.h"
 
 namespace physdbg::reports {
 namespace {
@@ -49,6 +49,17 @@ void writeCsv(const std::filesystem::path& directory, const std::string& referen
   writeFile(directory / (reference + ".csv"), text);
 }
 
+// gnuplot runs in `directory` (the script names its files relative to it),
+// with an argument vector: no shell ever sees the folder name.
+bool drawWithGnuplot(const std::filesystem::path& directory, const std::string& script) {
+  if (!findExecutable("gnuplot")) return false;
+  try {
+    return runChild({"gnuplot", {"./" + script}, directory.string(), true}).succeeded();
+  } catch (const std::runtime_error&) {
+    return false;
+  }
+}
+
 // One data block per method (gnuplot's `index`), errors clamped to 1e-16 so
 // exact results still appear on the log scale.
 bool writePlot(const std::filesystem::path& directory, const std::string& reference,
@@ -69,8 +80,7 @@ bool writePlot(const std::filesystem::path& directory, const std::string& refere
             "set terminal pngcairo noenhanced size 900,600\nset output '" + reference +
                 ".png'\nset logscale xy\nset format y '%g'\nset xlabel 'run time (ms)'\nset ylabel 'error'\nset title '" + reference +
                 ": work-precision'\nset key bottom left\nset grid\n" + plot + "\n");
-  const std::string command = "cd '" + directory.string() + "' && gnuplot '" + reference + ".gp' 2>/dev/null";
-  return std::system(command.c_str()) == 0;
+  return drawWithGnuplot(directory, reference + ".gp");
 }
 
 std::string summaryTable(const Grouped& grouped) {

@@ -1,0 +1,52 @@
+// render --video runs ffmpeg without a shell: a scene name or a path with
+// quotes, semicolons or $(...) reaches ffmpeg as literal text and runs nothing.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include "cli_test_support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+using namespace physdbg::clitesting;
+using physdbg::visualtesting::ScratchFolder;
+
+// Names that ran `touch` through the old shell command line.
+const std::string hostileName = "x';touch MARKER1;'";
+const std::string hostileFrames = "frames 50%';touch MARKER2;'";
+const std::string hostileVideo = "-v';touch MARKER3;'$(touch MARKER4).mp4";
+
+void writeHostileScene(const std::string& path) {
+  writeFile(path, R"({"name": ")" + hostileName + R"(", "steps": 2,
+      "bodies": [{"shape": {"sphere": {"radius": 0.5}}, "position": [0, 2, 0]}]})");
+}
+
+void expectNoMarkers(const ScratchFolder& folder) {
+  for (const char* marker : {"MARKER1", "MARKER2", "MARKER3", "MARKER4"})
+    EXPECT_FALSE(fs::exists(folder / marker)) << marker;
+}
+
+// "file:" keeps ffmpeg from reading a path as a protocol or an option; '%'
+// is doubled because the frame pattern reads it.
+TEST(VideoWithoutShell, FfmpegReceivesTheLiteralPathsAndNothingRuns) {
+  ScratchFolder folder;
+  writeHostileScene(folder / "evil.json");
+  const std::string log = folder / "ffmpeg-arguments.txt";
+  const PathPrefix path(fakeFfmpegFolder(folder, log));
+  const auto exit =
+      physdbgIn(folder / "", {"render", "evil.json", "--size", "64x48", "-o", hostileFrames, "--video", hostileVideo});
+  ASSERT_TRUE(exit.succeeded()) << exit.describe();
+  expectNoMarkers(folder);
+  EXPECT_TRUE(fs::exists(folder / (hostileFrames + "/frame_00002.png")));
+  const std::vector<std::string> arguments = readLines(log);
+  ASSERT_FALSE(arguments.empty());
+  EXPECT_NE(std::find(arguments.begin(), arguments.end(), "file:frames 50%%';touch MARKER2;'/frame_%05d.png"),
+            arguments.end());
+  EXPECT_EQ(arguments.back(), "file:" + hostileVideo);
+}
+
+}  // namespace
