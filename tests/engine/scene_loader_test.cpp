@@ -89,8 +89,6 @@ TEST_P(SceneLoaderRejects, WithAMessageNamingFileAndKey) {
   EXPECT_NE(message.find(GetParam().mustMention), std::string::npos) << message;
 }
 
-const char* const sphere = R"("shape": {"sphere": {"radius": 1}})";
-
 INSTANTIATE_TEST_SUITE_P(
     BadInput, SceneLoaderRejects,
     ::testing::Values(

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Builds physdbg with clang, AddressSanitizer and UndefinedBehaviorSanitizer
+# into build-asan/, runs every test but the benchmarks under them, then runs
+# each fuzz target for FUZZ_SECONDS (default 20) on its committed corpus.
+# scripts/test.sh (the README's test command, and CI) ends with this.
+# Leaks are reported except the third-party GL ones in tests/sanitizer/lsan.supp.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPHYSDBG_SANITIZE=ON \
+  -DPHYSDBG_FUZZ=ON -DPHYSDBG_WITH_PEERS=OFF >/dev/null
+targets=(physdbg engine_tests stability_tests report_tests render_tests golden_tests
+         fuzz_scene_loader fuzz_hull_contact fuzz_recording fuzz_png_compare)
+cmake --build build-asan -j "$(nproc)" --target "${targets[@]}"
+
+source scripts/sanitizer_env.sh
+export LP_NUM_THREADS=1
+start=$(date +%s)
+ctest --test-dir build-asan --output-on-failure -j "$(nproc)" -LE bench -E NOT_BUILT
+echo "sanitize: tests under ASan+UBSan took $(( $(date +%s) - start )) s"
+bash scripts/fuzz.sh --build-dir build-asan "${FUZZ_SECONDS:-20}"
