@@ -5,6 +5,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/overlapping_pairs.h"
 #include "engine/narrowphase/narrow_phase.h"
 #include "scenes/scene.h"
 
@@ -16,7 +17,8 @@ nlohmann::json vectorJson(const Vec3& v) { return nlohmann::json::array({v.x(), 
 }  // namespace
 
 // Every touching or overlapping pair of the scene's initial state, static
-// pairs included: this is for inspecting a configuration, so nothing is skipped.
+// pairs included: this is for inspecting a configuration, so nothing is
+// skipped. Pairs come sorted by (a, b) from the box tree (overlapping_pairs.h).
 int runContacts(const std::vector<std::string>& args) {
   const CommandSpec spec{"contacts",
                          "SCENE [--json]",
@@ -29,24 +31,22 @@ int runContacts(const std::vector<std::string>& args) {
   if (!parsed) return 0;
   const SceneDescription scene = resolveScene(parsed->positional()[0]);
   const World world = buildWorld(scene);
+  std::vector<Aabb> boxes;
+  boxes.reserve(world.bodyCount());
+  for (const RigidBody& body : world.bodies()) boxes.push_back(body.collider().worldBounds(body.transform()));
   nlohmann::json contacts = nlohmann::json::array();
-  for (BodyId a = 0; a < world.bodyCount(); ++a) {
-    const RigidBody& bodyA = world.body(a);
-    const Aabb boxA = bodyA.collider().worldBounds(bodyA.transform());
-    for (BodyId b = a + 1; b < world.bodyCount(); ++b) {
-      const RigidBody& bodyB = world.body(b);
-      if (!boxA.overlaps(bodyB.collider().worldBounds(bodyB.transform()))) continue;
-      const ContactResult result = collide(bodyA.collider(), bodyA.transform(), bodyB.collider(), bodyB.transform(),
-                                           scene.world.narrowPhase);
-      if (result.status == ContactStatus::Separated) continue;
-      contacts.push_back({{"a", a},
-                          {"b", b},
-                          {"status", contactStatusName(result.status)},
-                          {"normal", vectorJson(result.normal)},
-                          {"depth", result.depth},
-                          {"point_a", vectorJson(result.pointA)},
-                          {"point_b", vectorJson(result.pointB)}});
-    }
+  for (const BodyPair& pair : overlappingPairs(boxes)) {
+    const RigidBody &bodyA = world.body(pair.a), &bodyB = world.body(pair.b);
+    const ContactResult result =
+        collide(bodyA.collider(), bodyA.transform(), bodyB.collider(), bodyB.transform(), scene.world.narrowPhase);
+    if (result.status == ContactStatus::Separated) continue;
+    contacts.push_back({{"a", pair.a},
+                        {"b", pair.b},
+                        {"status", contactStatusName(result.status)},
+                        {"normal", vectorJson(result.normal)},
+                        {"depth", result.depth},
+                        {"point_a", vectorJson(result.pointA)},
+                        {"point_b", vectorJson(result.pointB)}});
   }
   if (parsed->has("--json")) {
     std::cout << contacts.dump(2) << "\n";
