@@ -81,7 +81,7 @@ int runRender(const std::vector<std::string>& args) {
   if (!parsed) return 0;
   const SceneDescription scene = resolveScene(parsed->positional()[0]);
   const ViewOptions options = readViewOptions(*parsed, scene);
-  const std::string outputDirectory = parsed->value("--output", "out/" + scene.name);
+  const std::string outputDirectory = parsed->value("--output", sceneOutputFolder(scene.name));
   const std::string video = parsed->value("--video");
   const std::string ffmpeg = !video.empty() ? findFfmpeg() : "";
   prepareOutputDirectory(outputDirectory);

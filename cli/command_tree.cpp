@@ -231,7 +231,7 @@ std::vector<TreeEvent> collectEvents(const SceneDescription& scene, const TreeVi
 
 TreeViewSettings readSettings(const Arguments& arguments, const SceneDescription& scene) {
   TreeViewSettings settings;
-  settings.outputDirectory = arguments.value("--output", "out/tree_" + scene.name);
+  settings.outputDirectory = arguments.value("--output", sceneOutputFolder(scene.name, "tree_"));
   std::tie(settings.width, settings.height) = parseSize(arguments.value("--size", "640x480"), "--size");
   if (settings.width < 400 || settings.height < 300) throw UsageError("--size: each panel needs at least 400x300");
   settings.maxEvents = arguments.positiveInt("--max-events", 12);

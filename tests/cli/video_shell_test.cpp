@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "cli/output_folder.h"
 #include "cli_test_support.h"
 
 namespace {
@@ -47,6 +48,32 @@ TEST(VideoWithoutShell, FfmpegReceivesTheLiteralPathsAndNothingRuns) {
   EXPECT_NE(std::find(arguments.begin(), arguments.end(), "file:frames 50%%';touch MARKER2;'/frame_%05d.png"),
             arguments.end());
   EXPECT_EQ(arguments.back(), "file:" + hostileVideo);
+}
+
+// The scene's name reaches ffmpeg only through the default output folder, made safe.
+TEST(VideoWithoutShell, TheSceneNameInTheDefaultFolderRunsNothing) {
+  ScratchFolder folder;
+  writeHostileScene(folder / "evil.json");
+  const std::string log = folder / "ffmpeg-arguments.txt";
+  const PathPrefix path(fakeFfmpegFolder(folder, log));
+  ASSERT_TRUE(physdbgIn(folder / "", {"render", "evil.json", "--size", "64x48", "--video", "v.mp4"}).succeeded());
+  expectNoMarkers(folder);
+  const std::string frames = physdbg::cli::sceneOutputFolder(hostileName);
+  EXPECT_TRUE(fs::exists(folder / (frames + "/frame_00000.png"))) << frames;
+  const std::vector<std::string> arguments = readLines(log);
+  EXPECT_NE(std::find(arguments.begin(), arguments.end(), "file:" + frames + "/frame_%05d.png"), arguments.end());
+}
+
+TEST(VideoWithoutShell, RealFfmpegWritesTheVideoAtItsLiteralPath) {
+  if (!physdbg::findExecutable("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed: no video is encoded here";
+  ScratchFolder folder;
+  writeHostileScene(folder / "evil.json");
+  const auto exit =
+      physdbgIn(folder / "", {"render", "evil.json", "--size", "64x48", "-o", hostileFrames, "--video", hostileVideo});
+  ASSERT_TRUE(exit.succeeded()) << exit.describe();
+  expectNoMarkers(folder);
+  ASSERT_TRUE(fs::exists(folder / hostileVideo));
+  EXPECT_GT(fs::file_size(folder / hostileVideo), 0u);
 }
 
 }  // namespace
