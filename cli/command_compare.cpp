@@ -6,6 +6,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/output_folder.h"
 #include "render/image.h"
 #include "render/image_compare.h"
 
@@ -56,13 +57,15 @@ int runCompare(const std::vector<std::string>& args) {
   options.channelThreshold = parseNumber(*parsed, "--threshold", defaults.channelThreshold, 0, 255);
   options.maxDifferentShare = parseNumber(*parsed, "--max-share", defaults.maxDifferentShare, 0.0, 1.0);
   options.neighbourhoodRadius = parseNumber(*parsed, "--radius", defaults.neighbourhoodRadius, 0, 8);
+  const std::string diff = parsed->value("--diff");
+  if (parsed->has("--diff")) checkOutputFile(diff, "--diff");
   const render::Image expected = readImage(parsed->positional()[0]);
   const render::Image actual = readImage(parsed->positional()[1]);
   const render::CompareResult result = render::compareImages(expected, actual, options);
   std::printf("%s\n", render::describeComparison(result, options).c_str());
   if (parsed->has("--diff")) {
-    render::writePng(parsed->value("--diff"), render::diffImage(expected, actual, options));
-    std::printf("wrote diff %s\n", parsed->value("--diff").c_str());
+    writeOutputPng(diff, render::diffImage(expected, actual, options), "--diff");
+    std::printf("wrote diff %s\n", diff.c_str());
   }
   return result.passed ? 0 : 1;
 }

@@ -1,9 +1,11 @@
 // physdbg record: simulates a scene and writes every frame's primitives and
 // view to a recording (debugdraw/recording.h), without rendering.
 #include <cstdio>
+#include <stdexcept>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/numerical_faults.h"
 #include "cli/progress_bar.h"
 #include "cli/scene_frames.h"
 #include "debugdraw/recording.h"
@@ -40,11 +42,15 @@ int runRecord(const std::vector<std::string>& args) {
     writer->write(frames.frame(index));
     progress.update(index - options.frames.first + 1);
   }
-  writer->close();
+  try {
+    writer->close();
+  } catch (const std::runtime_error& error) {
+    throw UsageError(std::string("-o: ") + error.what());
+  }
   progress.finish();
   std::printf("recorded frames %d..%d of %s to %s\n", options.frames.first, options.frames.last - 1,
               scene.name.c_str(), path.c_str());
-  return frames.world().numericalFaults().empty() ? 0 : 1;
+  return reportNumericalFaults("record", frames.world());
 }
 
 }  // namespace physdbg::cli

@@ -5,10 +5,10 @@
 #include <iostream>
 #include <optional>
 #include <stdexcept>
-#include <thread>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/numerical_faults.h"
 #include "cli/output_folder.h"
 #include "cli/png_writer_pool.h"
 #include "cli/progress_bar.h"
@@ -53,11 +53,12 @@ void encodeVideo(const std::string& ffmpeg, const std::string& directory, const 
   if (!exit.succeeded()) throw std::runtime_error("ffmpeg failed to write '" + video + "' (" + exit.describe() + ")");
 }
 
-// Finds ffmpeg on PATH before any frame is drawn.
-std::string findFfmpeg() {
+// Finds ffmpeg on PATH and checks the video path before any frame is drawn.
+std::string prepareVideo(const std::string& video) {
   const std::optional<std::string> ffmpeg = findExecutable("ffmpeg");
   if (!ffmpeg)
     throw UsageError("--video: ffmpeg is not installed (apt-get install ffmpeg); the PNG frames need no ffmpeg");
+  checkOutputFile(video, "--video");
   return *ffmpeg;
 }
 
@@ -83,13 +84,13 @@ int runRender(const std::vector<std::string>& args) {
   const ViewOptions options = readViewOptions(*parsed, scene);
   const std::string outputDirectory = parsed->value("--output", sceneOutputFolder(scene.name));
   const std::string video = parsed->value("--video");
-  const std::string ffmpeg = !video.empty() ? findFfmpeg() : "";
+  const std::string ffmpeg = parsed->has("--video") ? prepareVideo(video) : "";
   prepareOutputDirectory(outputDirectory);
 
   SceneFrames frames(scene, options);
   render::Renderer renderer({options.width, options.height, 0, readBackend(*parsed)});
-  const unsigned cores = std::max(2u, std::thread::hardware_concurrency());
-  PngWriterPool writers(static_cast<int>(cores - 1), 2 * cores);
+  const PoolSize pool = framePoolSize(options.width, options.height);
+  PngWriterPool writers(pool, "-o");
   ProgressBar progress("render " + scene.name, options.frames.count());
 
   double drawSeconds = 0;
@@ -109,17 +110,14 @@ int runRender(const std::vector<std::string>& args) {
   const double count = options.frames.count();
   std::printf("wrote %d frames (%dx%d) to %s\n", options.frames.count(), options.width, options.height,
               outputDirectory.c_str());
-  std::printf("per frame: simulate %.3f ms, draw %.3f ms, PNG encode %.3f ms (on %u worker threads), wall %.3f ms\n",
+  std::printf("per frame: simulate %.3f ms, draw %.3f ms, PNG encode %.3f ms (on %d worker threads), wall %.3f ms\n",
               1e3 * frames.simulateSeconds() / count, 1e3 * (frames.drawSeconds() + drawSeconds) / count,
-              1e3 * writers.encodeSeconds() / count, cores - 1, 1e3 * wall / count);
+              1e3 * writers.encodeSeconds() / count, pool.workers, 1e3 * wall / count);
   if (!ffmpeg.empty()) {
     encodeVideo(ffmpeg, outputDirectory, video, 1.0 / (scene.world.dt * options.stepsPerFrame), options.frames.first);
     std::printf("wrote video %s\n", video.c_str());
   }
-  for (const NumericalFault& fault : frames.world().numericalFaults())
-    std::fprintf(stderr, "physdbg render: body %u: %s at step %d; body frozen\n", fault.body, fault.what.c_str(),
-                 fault.step);
-  return frames.world().numericalFaults().empty() ? 0 : 1;
+  return reportNumericalFaults("render", frames.world());
 }
 
 }  // namespace physdbg::cli

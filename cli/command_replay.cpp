@@ -2,7 +2,6 @@
 // frame range lets several processes share one long recording.
 #include <cstdio>
 #include <limits>
-#include <thread>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
@@ -38,8 +37,7 @@ int runReplay(const std::vector<std::string>& args) {
   prepareOutputDirectory(directory);
 
   render::Renderer renderer({width, height, 0, readBackend(*parsed)});
-  const unsigned cores = std::max(2u, std::thread::hardware_concurrency());
-  PngWriterPool writers(static_cast<int>(cores - 1), 2 * cores);
+  PngWriterPool writers(framePoolSize(width, height), "-o");
   debugdraw::RecordedFrame frame;
   int written = 0;
   while (reader.next(frame, range.first, range.last)) {

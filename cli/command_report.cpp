@@ -1,6 +1,7 @@
 // physdbg report stability|accuracy|stages [-o DIR]: the reports of issue 9.
 // Tables go to stdout; with -o the same tables (Markdown, CSV) and plots are
 // written to DIR.
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -8,6 +9,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/output_folder.h"
 #include "reports/accuracy_report.h"
 #include "reports/stability_report.h"
 #include "reports/stage_report.h"
@@ -16,20 +18,25 @@
 namespace physdbg::cli {
 namespace {
 
+// A failed write, checked after writing and after closing, names -o.
 void writeText(const std::filesystem::path& path, const std::string& text) {
+  errno = 0;
   std::ofstream file(path);
   file << text;
-  if (!file) throw std::runtime_error("cannot write '" + path.string() + "'");
+  file.close();
+  if (!file) throw outputError("-o", path.string());
 }
 
+// Created and checked writable before any case runs.
 std::filesystem::path outputDirectory(const Arguments& parsed) {
-  const std::filesystem::path directory = parsed.value("--output");
-  if (!directory.empty()) std::filesystem::create_directories(directory);
+  const std::string directory = parsed.value("--output");
+  if (parsed.has("--output")) prepareOutputDirectory(directory);
   return directory;
 }
 
 // Exit code 1 when any case fails, so scripts can gate on it.
 int reportStability(const Arguments& parsed) {
+  const auto directory = outputDirectory(parsed);
   const auto length = parsed.has("--quick") ? reports::RunLength::Test : reports::RunLength::Report;
   const auto rows = reports::runStabilitySuite(length, parsed.value("--case"), [](const reports::StabilityRow& row) {
     std::printf("%-22s %-4s %12.4g %-8s %6.2fs  %s\n", row.name.c_str(), row.outcome.pass ? "PASS" : "FAIL",
@@ -39,7 +46,6 @@ int reportStability(const Arguments& parsed) {
   if (rows.empty()) throw UsageError("--case: no stability case matches '" + parsed.value("--case") + "'");
   const std::string markdown = reports::stabilityMarkdown(rows);
   std::cout << "\n" << markdown;
-  const auto directory = outputDirectory(parsed);
   if (!directory.empty()) {
     writeText(directory / "stability.md", markdown);
     writeText(directory / "stability.csv", reports::stabilityCsv(rows));
@@ -63,6 +69,7 @@ int reportAccuracy(const Arguments& parsed) {
 // Spheres only against boxes, no layers against every layer: the counters
 // show which stages and layers did work.
 int reportStages(const Arguments& parsed) {
+  const auto directory = outputDirectory(parsed);
   const int steps = parsed.has("--quick") ? 10 : 120;
   std::string table =
       "| scene | steps | candidate pairs | narrow pairs | closed form | GJK | EPA | manifolds | locked bodies | layers "
@@ -79,7 +86,6 @@ int reportStages(const Arguments& parsed) {
     }
   }
   std::cout << table;
-  const auto directory = outputDirectory(parsed);
   if (!directory.empty()) writeText(directory / "stages.md", table);
   return 0;
 }

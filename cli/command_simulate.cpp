@@ -1,3 +1,6 @@
+// physdbg simulate: runs a scene without rendering; summary, CSV trace,
+// state hash, contact events.
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -5,21 +8,29 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/numerical_faults.h"
+#include "cli/output_folder.h"
 #include "cli/state_hash.h"
 #include "scenes/scene.h"
 
 namespace physdbg::cli {
 namespace {
 
+// Streams the trace row by row: nothing is held per step, so a long run
+// costs disk, not memory. A failed write (disk full, /dev/full) is an error
+// naming --trace and the path, found after each step and at the close.
 class TraceWriter {
  public:
-  explicit TraceWriter(const std::string& path) : path_(path), file_(path) {
-    if (!file_) throw UsageError("--trace: cannot write '" + path + "'");
+  explicit TraceWriter(const std::string& path) : path_(path) {
+    errno = 0;
+    file_.open(path);
+    if (!file_) throw outputError("--trace", path);
     file_ << "step,time,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n";
   }
 
   // Full precision (%.17g) so a trace can be compared bit for bit.
   void write(const World& world) {
+    errno = 0;
     char line[512];
     for (std::size_t i = 0; i < world.bodyCount(); ++i) {
       const RigidBody& body = world.body(static_cast<BodyId>(i));
@@ -33,10 +44,22 @@ class TraceWriter {
                     v.y(), v.z(), w.x(), w.y(), w.z());
       file_ << line;
     }
-    if (!file_) throw std::runtime_error("writing trace '" + path_ + "' failed");
+    check();
+  }
+
+  void close() {
+    errno = 0;
+    file_.flush();
+    check();
+    file_.close();
+    check();
   }
 
  private:
+  void check() {
+    if (!file_) throw outputError("--trace", path_);
+  }
+
   std::string path_;
   std::ofstream file_;
 };
@@ -90,6 +113,7 @@ int runSimulate(const std::vector<std::string>& args) {
     stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (trace) trace->write(world);
   }
+  if (trace) trace->close();
 
   double kineticEnergy = 0;
   for (std::size_t i = 0; i < world.bodyCount(); ++i) {
@@ -107,11 +131,7 @@ int runSimulate(const std::vector<std::string>& args) {
   if (stats.substeps > 0)
     std::printf("solver: %d substeps, contacts at %.4g Hz\n", stats.substeps, stats.contactHertz);
   if (parsed->has("--hash")) std::printf("state hash %s\n", hexHash(worldStateHash(world)).c_str());
-  for (const NumericalFault& fault : world.numericalFaults()) {
-    std::fprintf(stderr, "physdbg simulate: body %u: %s at step %d; body frozen\n", fault.body, fault.what.c_str(),
-                 fault.step);
-  }
-  return world.numericalFaults().empty() ? 0 : 1;
+  return reportNumericalFaults("simulate", world);
 }
 
 }  // namespace physdbg::cli

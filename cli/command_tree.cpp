@@ -170,7 +170,7 @@ void writePlot(const std::vector<Aabb>& boxes, const TreeViewSettings& settings,
   drawLinePlot("tree height", "insertions", {{"rotations", onColor, on.height}, {"no rotations", offColor, off.height}},
                {0, 0, double(width), double(height)}, heightFrame);
   const render::Camera camera = pixelCamera(width, height);
-  render::writePng(path, sideBySide(renderer.render(sarFrame, camera), renderer.render(heightFrame, camera)));
+  writeOutputPng(path, sideBySide(renderer.render(sarFrame, camera), renderer.render(heightFrame, camera)), "-o");
   std::printf("final SAR %.3f with rotations, %.3f without; height %g with, %g without\n",
               on.sar.empty() ? 0.0 : on.sar.back(), off.sar.empty() ? 0.0 : off.sar.back(),
               on.height.empty() ? 0.0 : on.height.back(), off.height.empty() ? 0.0 : off.height.back());
@@ -291,8 +291,8 @@ int runTree(const std::vector<std::string>& args) {
     char name[64];
     for (const bool after : {false, true}) {
       std::snprintf(name, sizeof name, "event_%03d_%s.png", i, after ? "after" : "before");
-      render::writePng((fs::path(settings.outputDirectory) / name).string(),
-                       renderEventFrame(panels, event, after, camera));
+      writeOutputPng((fs::path(settings.outputDirectory) / name).string(),
+                     renderEventFrame(panels, event, after, camera), "-o");
     }
     int grandchildSwaps = 0;
     for (const RotationEvent& rotation : event.rotations)

@@ -1,10 +1,11 @@
 #include "cli/output_folder.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
-
-#include "cli/arguments.h"
+#include <stdexcept>
 
 namespace physdbg::cli {
 
@@ -20,17 +21,43 @@ bool isPlainNameCharacter(char c) {
 
 }  // namespace
 
-void prepareOutputDirectory(const std::string& directory) {
+UsageError outputError(const std::string& option, const std::string& path, const std::string& reason) {
+  const std::string why = !reason.empty() ? reason : errno != 0 ? std::strerror(errno) : "the write failed";
+  return UsageError(option + ": cannot write '" + path + "': " + why);
+}
+
+void prepareOutputDirectory(const std::string& directory, const std::string& option) {
   std::error_code error;
   fs::create_directories(directory, error);
   if (error || !fs::is_directory(directory))
-    throw UsageError("-o: cannot create folder '" + directory + "'" + (error ? ": " + error.message() : ""));
+    throw UsageError(option + ": cannot create folder '" + directory + "'" + (error ? ": " + error.message() : ""));
   const fs::path probe = fs::path(directory) / ".physdbg-write-test";
   {
     std::ofstream file(probe);
-    if (!file) throw UsageError("-o: folder '" + directory + "' is not writable");
+    if (!file) throw UsageError(option + ": folder '" + directory + "' is not writable");
   }
   fs::remove(probe, error);
+}
+
+void checkOutputFile(const std::string& path, const std::string& option) {
+  if (path.empty()) throw UsageError(option + ": the path is empty");
+  std::error_code error;
+  if (fs::is_directory(path, error)) throw outputError(option, path, "it is a folder");
+  const bool existed = fs::exists(path, error);
+  errno = 0;
+  {
+    std::ofstream file(path, std::ios::app);  // appending leaves an existing file as it is
+    if (!file) throw outputError(option, path);
+  }
+  if (!existed) fs::remove(path, error);
+}
+
+void writeOutputPng(const std::string& path, const render::Image& image, const std::string& option) {
+  try {
+    render::writePng(path, image);
+  } catch (const std::runtime_error& failure) {
+    throw UsageError(option + ": " + failure.what());
+  }
 }
 
 std::string safeFileName(const std::string& name) {

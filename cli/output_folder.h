@@ -1,14 +1,30 @@
 #pragma once
-// Output folders and frame file names shared by the commands that write
-// frame sequences, so split renders of one scene land in one folder, and
-// the safe folder names made from scene names.
+// Output folders, output files and frame file names shared by every command
+// that writes, so that a path a user gave fails the same way everywhere: a
+// UsageError (exit code 2) naming the option and the path, before the work
+// when it can be seen then, and when the write fails otherwise.
 #include <string>
+
+#include "cli/arguments.h"
+#include "render/image.h"
 
 namespace physdbg::cli {
 
 // Creates the folder and checks it is writable before any work is done.
-// Throws UsageError (exit code 2) naming the folder.
-void prepareOutputDirectory(const std::string& directory);
+// Throws UsageError naming `option` and the folder.
+void prepareOutputDirectory(const std::string& directory, const std::string& option = "-o");
+
+// Checks that `path` can be written as a file (its folder exists, it is not a
+// folder, it opens for writing) without changing an existing file. Throws
+// UsageError naming `option` and the path.
+void checkOutputFile(const std::string& path, const std::string& option);
+
+// "--trace: cannot write 'x.csv': No space left on device". Without a
+// reason, the one errno gives (clear errno before the write to check).
+UsageError outputError(const std::string& option, const std::string& path, const std::string& reason = "");
+
+// writePng, with a failure reported as a UsageError naming `option`.
+void writeOutputPng(const std::string& path, const render::Image& image, const std::string& option);
 
 // A scene name as a safe file name: letters, digits, '-', '_' and '.' are
 // kept, everything else (slashes, quotes, spaces, bytes of other alphabets)

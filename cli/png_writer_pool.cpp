@@ -1,11 +1,23 @@
 #include "cli/png_writer_pool.h"
 
+#include <algorithm>
 #include <chrono>
+#include <stdexcept>
+
+#include "cli/arguments.h"
 
 namespace physdbg::cli {
 
-PngWriterPool::PngWriterPool(int workers, std::size_t maxQueued) : maxQueued_(maxQueued) {
-  for (int i = 0; i < workers; ++i) workers_.emplace_back([this] { work(); });
+PoolSize framePoolSize(int width, int height) {
+  constexpr std::size_t maxQueuedBytes = std::size_t{1} << 30;
+  const unsigned cores = std::max(2u, std::thread::hardware_concurrency());
+  const std::size_t frameBytes = std::max<std::size_t>(1, std::size_t(width) * std::size_t(height) * 4);
+  return {static_cast<int>(cores - 1), std::clamp<std::size_t>(maxQueuedBytes / frameBytes, 1, 2 * cores)};
+}
+
+PngWriterPool::PngWriterPool(PoolSize size, std::string option)
+    : maxQueued_(size.maxQueued), option_(std::move(option)) {
+  for (int i = 0; i < size.workers; ++i) workers_.emplace_back([this] { work(); });
 }
 
 PngWriterPool::~PngWriterPool() {
@@ -57,6 +69,8 @@ void PngWriterPool::work() {
     std::exception_ptr failure;
     try {
       render::writePng(job.path, job.image);
+    } catch (const std::runtime_error& error) {
+      failure = std::make_exception_ptr(UsageError(option_ + ": " + error.what()));
     } catch (...) {
       failure = std::current_exception();
     }

@@ -14,9 +14,21 @@
 
 namespace physdbg::cli {
 
+struct PoolSize {
+  int workers = 1;
+  std::size_t maxQueued = 2;
+};
+
+// One worker per core but one (the drawing thread keeps one), and a queue of
+// two frames per core, shortened for large frames so that queued images
+// stay under 1 GiB.
+PoolSize framePoolSize(int width, int height);
+
 class PngWriterPool {
  public:
-  PngWriterPool(int workers, std::size_t maxQueued);
+  // A frame that cannot be written fails the run as a UsageError naming
+  // `option` (the output folder's option) and the file.
+  PngWriterPool(PoolSize size, std::string option);
   ~PngWriterPool();  // waits for queued frames
   PngWriterPool(const PngWriterPool&) = delete;
   PngWriterPool& operator=(const PngWriterPool&) = delete;
@@ -40,6 +52,7 @@ class PngWriterPool {
   std::condition_variable changed_;
   std::deque<Job> queue_;
   std::size_t maxQueued_;
+  std::string option_;
   int busy_ = 0;
   bool stopping_ = false;
   std::exception_ptr failure_;
