@@ -1,5 +1,7 @@
 #include "engine/colliders/convex_mesh_collider.h"
 
+#include <cmath>
+
 namespace physdbg {
 namespace {
 
@@ -21,6 +23,42 @@ Mat3 tetrahedronCovariance(const Vec3& a, const Vec3& b, const Vec3& c) {
   return edges.determinant() / 120.0 * edges * canonical * edges.transpose();
 }
 
+struct MassProperties {
+  double volume = 0.0;
+  Vec3 centroid = Vec3::Zero();
+  Mat3 unitInertia = Mat3::Zero();
+};
+
+// Mass properties from tetrahedra fanned from a point inside the hull, which
+// keeps every term small and well conditioned, in units of a power of two
+// near the hull's size (exact), so that no product of three coordinates
+// under- or overflows however small or large the hull is.
+MassProperties massProperties(const ConvexHull& hull, const Aabb& bounds) {
+  const auto& v = hull.vertices;
+  Vec3 reference = Vec3::Zero();
+  for (const Vec3& p : v) reference += p / static_cast<double>(v.size());
+  int exponent = 0;
+  std::frexp(bounds.halfExtents().maxCoeff(), &exponent);
+  const auto scaled = [](int power) { return [power](double x) { return std::ldexp(x, power); }; };
+  double volume = 0.0;
+  Mat3 covariance = Mat3::Zero();
+  Vec3 moment = Vec3::Zero();
+  for (const auto& t : hull.triangles) {
+    const Vec3 a = (v[t[0]] - reference).unaryExpr(scaled(-exponent));
+    const Vec3 b = (v[t[1]] - reference).unaryExpr(scaled(-exponent));
+    const Vec3 c = (v[t[2]] - reference).unaryExpr(scaled(-exponent));
+    const double tetraVolume = a.dot(b.cross(c)) / 6.0;
+    volume += tetraVolume;
+    moment += tetraVolume * (a + b + c) / 4.0;
+    covariance += tetrahedronCovariance(a, b, c);
+  }
+  const Vec3 offset = moment / volume;
+  covariance -= volume * offset * offset.transpose();
+  const Mat3 unitInertia = (Mat3::Identity() * covariance.trace() - covariance) / volume;
+  return {std::ldexp(volume, 3 * exponent), reference + offset.unaryExpr(scaled(exponent)),
+          unitInertia.unaryExpr(scaled(2 * exponent))};
+}
+
 }  // namespace
 
 ConvexMeshCollider::ConvexMeshCollider(std::vector<Vec3> points) : hull_(buildConvexHull(points)) {
@@ -33,23 +71,10 @@ ConvexMeshCollider::ConvexMeshCollider(std::vector<Vec3> points) : hull_(buildCo
       if (v[i].dot(direction) > v[seedVertices_[s]].dot(direction)) seedVertices_[s] = i;
     }
   }
-  // Mass properties from tetrahedra fanned from a point inside the hull, which
-  // keeps every term small and well conditioned.
-  Vec3 reference = Vec3::Zero();
-  for (const Vec3& p : v) reference += p / static_cast<double>(v.size());
-  Mat3 covariance = Mat3::Zero();
-  Vec3 moment = Vec3::Zero();
-  for (const auto& t : hull_.triangles) {
-    const Vec3 a = v[t[0]] - reference, b = v[t[1]] - reference, c = v[t[2]] - reference;
-    const double tetraVolume = a.dot(b.cross(c)) / 6.0;
-    volume_ += tetraVolume;
-    moment += tetraVolume * (a + b + c) / 4.0;
-    covariance += tetrahedronCovariance(a, b, c);
-  }
-  const Vec3 offset = moment / volume_;
-  centroid_ = reference + offset;
-  covariance -= volume_ * offset * offset.transpose();
-  unitInertia_ = (Mat3::Identity() * covariance.trace() - covariance) / volume_;
+  const MassProperties mass = massProperties(hull_, bounds_);
+  volume_ = mass.volume;
+  centroid_ = mass.centroid;
+  unitInertia_ = mass.unitInertia;
 }
 
 int ConvexMeshCollider::supportIndex(const Vec3& direction, int hint) const {

@@ -7,7 +7,9 @@
 // are scanned by brute force, which is faster than climbing.
 //
 // The local frame is the one the points are given in; centroid() is the centre
-// of mass in that frame and unitInertia() is taken about the centroid.
+// of mass in that frame and unitInertia() is taken about the centroid. Both
+// are exact for hulls of any size; volume() under- or overflows a double for
+// hulls under about 1e-100 or over 1e100 across (it is m^3).
 #include <array>
 #include <vector>
 

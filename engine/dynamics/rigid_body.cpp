@@ -1,8 +1,12 @@
 #include "engine/dynamics/rigid_body.h"
 
+#include <Eigen/Eigenvalues>
+#include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 #include "engine/colliders/convex_mesh_collider.h"
 
@@ -21,6 +25,40 @@ Quat rotationFromVector(const Vec3& rotation) {
   const double angle = rotation.norm();
   if (angle < 1e-300) return Quat::Identity();
   return Quat(Eigen::AngleAxisd(angle, rotation / angle));
+}
+
+std::string figure(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+// Eigenvalues of a symmetric matrix are resolved to about this share of the
+// largest; a smaller smallest principal moment is indistinguishable from zero.
+constexpr double kSingularInertiaShare = 16.0 * DBL_EPSILON;
+
+// Inverse of a body's inertia tensor. The tensor is singular when it is not
+// positive definite relative to its own scale (a rod has no moment about its
+// axis), not when its entries are small: a body of 1e-150 kg is fine. Scaling
+// by a power of two is exact, so wherever inverting directly works this gives
+// the same bits.
+Mat3 inverseInertia(const Mat3& inertia, double mass) {
+  const std::string product = " (mass " + figure(mass) + " kg times the collider's unit inertia)";
+  if (!inertia.allFinite()) throw std::invalid_argument("inertia tensor overflows a double" + product);
+  const double largest = inertia.cwiseAbs().maxCoeff();
+  if (!(largest > 0.0)) throw std::invalid_argument("inertia tensor underflows to zero" + product);
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  const Mat3 unit = inertia.unaryExpr([exponent](double x) { return std::ldexp(x, -exponent); });
+  const Vec3 moments = Eigen::SelfAdjointEigenSolver<Mat3>(unit, Eigen::EigenvaluesOnly).eigenvalues();
+  if (!(moments.minCoeff() > kSingularInertiaShare * moments.maxCoeff())) {
+    throw std::invalid_argument("collider has a singular inertia tensor: its smallest principal moment is " +
+                                figure(moments.minCoeff() / moments.maxCoeff()) + " of its largest (needs over " +
+                                figure(kSingularInertiaShare) + "; a rod or a point turns freely about some axis)");
+  }
+  const Mat3 inverse = unit.inverse().unaryExpr([exponent](double x) { return std::ldexp(x, -exponent); });
+  if (!inverse.allFinite()) throw std::invalid_argument("inverse inertia tensor overflows a double" + product);
+  return inverse;
 }
 
 }  // namespace
@@ -70,9 +108,11 @@ RigidBody::RigidBody(const BodyDefinition& definition)
   }
   if (!(mass_ > 0.0) || !std::isfinite(mass_)) throw std::invalid_argument("mass must be positive and finite");
   inverseMass_ = 1.0 / mass_;
+  if (!std::isfinite(inverseMass_)) {
+    throw std::invalid_argument("mass " + figure(mass_) + " kg is too small: its inverse overflows a double");
+  }
   localInertia_ = collider_->unitInertia() * mass_;
-  localInverseInertia_ = localInertia_.inverse();
-  if (!localInverseInertia_.allFinite()) throw std::invalid_argument("collider has a singular inertia tensor");
+  localInverseInertia_ = inverseInertia(localInertia_, mass_);
   isotropic_ = localInertia_ == localInertia_(0, 0) * Mat3::Identity();
   applyLocks();
 }

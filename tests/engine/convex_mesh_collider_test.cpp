@@ -1,9 +1,11 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/convex_mesh_collider.h"
+#include "engine/dynamics/rigid_body.h"
 
 namespace physdbg {
 namespace {
@@ -110,6 +112,47 @@ TEST(ConvexMeshCollider, BadCloudsThrow) {
   EXPECT_THROW(ConvexMeshCollider({Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 2, 2), Vec3(3, 3, 3)}), std::invalid_argument);
   EXPECT_THROW(ConvexMeshCollider({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, NAN)}), std::invalid_argument);
   EXPECT_NO_THROW(ConvexMeshCollider({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}));
+}
+
+TEST(ConvexMeshCollider, MassPropertiesOfTinyAndHugeHullsAreExact) {
+  // volume() is m^3: 1e-360 and 1e360 are out of double range, the rest is not.
+  for (double scale : {1e-120, 1e120}) {
+    const Vec3 half = Vec3(0.5, 1.0, 1.5) * scale, offset = Vec3(3, -2, 7) * scale;
+    ConvexMeshCollider mesh(cubeCorners(half, offset));
+    BoxCollider box(half);
+    EXPECT_LE((mesh.centroid() - offset).norm(), 1e-12 * offset.norm());
+    EXPECT_LE((mesh.unitInertia() - box.unitInertia()).norm(), 1e-12 * box.unitInertia().norm());
+  }
+}
+
+std::string bodyError(const BodyDefinition& definition) {
+  try {
+    RigidBody body(definition);
+  } catch (const std::invalid_argument& error) {
+    return error.what();
+  }
+  return "(no exception)";
+}
+
+TEST(ConvexMeshCollider, BodiesOfTinyMassAreValidAndDegenerateOnesSayWhy) {
+  BodyDefinition definition;
+  definition.mass = 1e-150;
+  for (std::shared_ptr<const Collider> collider :
+       {std::shared_ptr<const Collider>(std::make_shared<BoxCollider>(Vec3(0.5, 1.0, 1.5))),
+        std::shared_ptr<const Collider>(std::make_shared<ConvexMeshCollider>(cubeCorners(Vec3(0.5, 1.0, 1.5))))}) {
+    definition.collider = collider;
+    const RigidBody body(definition);
+    const Mat3 expected = collider->unitInertia().inverse() / definition.mass;
+    EXPECT_LE((body.worldInverseInertia() - expected).norm(), 1e-12 * expected.norm());
+  }
+  definition.collider = std::make_shared<BoxCollider>(Vec3(1.0, 0.0, 0.0));  // a rod: no moment about its axis
+  EXPECT_NE(bodyError(definition).find("singular inertia tensor"), std::string::npos) << bodyError(definition);
+  definition.collider = std::make_shared<ConvexMeshCollider>(cubeCorners(Vec3::Constant(1e-100)));
+  definition.mass = 1e-300;  // inertia 1e-500
+  EXPECT_NE(bodyError(definition).find("underflows"), std::string::npos) << bodyError(definition);
+  definition.collider = std::make_shared<BoxCollider>(Vec3(0.5, 0.5, 0.5));
+  definition.mass = 1e-320;  // 1 / mass overflows
+  EXPECT_NE(bodyError(definition).find("too small"), std::string::npos) << bodyError(definition);
 }
 
 }  // namespace
