@@ -5,6 +5,8 @@
 #include <iostream>
 #include <sstream>
 
+#include "cli/limits.h"
+
 namespace physdbg::cli {
 
 std::optional<Arguments> Arguments::parse(const CommandSpec& spec, const std::vector<std::string>& args) {
@@ -56,13 +58,13 @@ std::string Arguments::value(const std::string& option, const std::string& fallb
   return found == values_.end() ? fallback : found->second;
 }
 
-int Arguments::positiveInt(const std::string& option, int fallback) const {
+int Arguments::positiveInt(const std::string& option, int fallback, int maximum) const {
   if (!has(option)) return fallback;
   const std::string text = value(option);
   int parsed = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), parsed);
-  if (error != std::errc() || end != text.data() + text.size() || parsed <= 0)
-    throw UsageError(option + " must be a positive integer, got '" + text + "'");
+  if (error != std::errc() || end != text.data() + text.size() || parsed <= 0 || parsed > maximum)
+    throw UsageError(option + " must be a whole number from 1 to " + std::to_string(maximum) + ", got '" + text + "'");
   return parsed;
 }
 
@@ -100,9 +102,12 @@ std::pair<int, int> parseSize(const std::string& text, const std::string& option
     const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), out);
     return error == std::errc() && end == part.data() + part.size() && !part.empty();
   };
+  const auto inRange = [](int side) { return side >= limits::minImageSide && side <= limits::maxImageSide; };
   if (x == std::string::npos || !parsePart(text.substr(0, x), width) || !parsePart(text.substr(x + 1), height) ||
-      width < 16 || height < 16 || width > 8192 || height > 8192)
-    throw UsageError(option + " must be WIDTHxHEIGHT with each side from 16 to 8192, got '" + text + "'");
+      !inRange(width) || !inRange(height) || static_cast<long long>(width) * height > limits::maxImagePixels)
+    throw UsageError(option + " must be WIDTHxHEIGHT with each side from " + std::to_string(limits::minImageSide) +
+                     " to " + std::to_string(limits::maxImageSide) + " and at most " +
+                     std::to_string(limits::maxImagePixels) + " pixels, got '" + text + "'");
   return {width, height};
 }
 

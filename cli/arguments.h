@@ -40,7 +40,8 @@ class Arguments {
   const std::vector<std::string>& positional() const { return positional_; }
 
   // Typed accessors: throw UsageError naming the option and the bad value.
-  int positiveInt(const std::string& option, int fallback) const;
+  // Whole numbers 1..maximum (the bound keeps loops and allocations finite).
+  int positiveInt(const std::string& option, int fallback, int maximum) const;
   double positiveDouble(const std::string& option, double fallback) const;
 
  private:
@@ -51,7 +52,8 @@ class Arguments {
 
 std::string helpText(const CommandSpec& spec);
 
-// "1280x720" -> {1280, 720}; throws UsageError naming `option`.
+// "1280x720" -> {1280, 720}, each side and the pixel count within limits.h;
+// throws UsageError naming `option`.
 std::pair<int, int> parseSize(const std::string& text, const std::string& option);
 
 }  // namespace physdbg::cli

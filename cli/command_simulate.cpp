@@ -8,6 +8,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/limits.h"
 #include "cli/numerical_faults.h"
 #include "cli/output_folder.h"
 #include "cli/state_hash.h"
@@ -96,7 +97,7 @@ int runSimulate(const std::vector<std::string>& args) {
   const auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const SceneDescription scene = resolveScene(parsed->positional()[0]);
-  const int steps = parsed->positiveInt("--steps", scene.steps);
+  const int steps = parsed->positiveInt("--steps", scene.steps, static_cast<int>(limits::maxSteps));
   World world = buildWorld(scene);
   EventPrinter events(world);
   if (parsed->has("--events")) world.setContactListener(&events);

@@ -5,10 +5,13 @@
 // SAR and height against insertion count with and without rotations.
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
+#include <optional>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/limits.h"
 #include "cli/line_plot.h"
 #include "cli/output_folder.h"
 #include "cli/pixel_canvas.h"
@@ -176,12 +179,23 @@ void writePlot(const std::vector<Aabb>& boxes, const TreeViewSettings& settings,
               on.height.empty() ? 0.0 : on.height.back(), off.height.empty() ? 0.0 : off.height.back());
 }
 
-// Runs `change` with the log cleared; keeps an event when it rotated.
+// Rotating events as they happen: the first `keep` are snapshotted and handed
+// to `onEvent`, the rest only counted. Nothing is kept per event, so memory is
+// one tree whatever the scene's size and however many events it makes.
+struct EventStream {
+  long long keep = 0;
+  std::function<void(const TreeEvent& event, int index)> onEvent;
+  int count = 0;
+};
+
+// Runs `change` with the log cleared; reports an event when it rotated.
 template <typename Change>
-void observe(DynamicAabbTree& tree, const std::string& what, Change&& change, std::vector<TreeEvent>& events) {
+void observe(DynamicAabbTree& tree, const std::string& what, Change&& change, EventStream& stream) {
   tree.clearRotationLog();
   const int leaf = change();
   if (tree.rotationLog().empty()) return;
+  const int index = stream.count++;
+  if (index >= stream.keep) return;
   TreeEvent event;
   event.what = what;
   event.leaf = leaf;
@@ -189,17 +203,16 @@ void observe(DynamicAabbTree& tree, const std::string& what, Change&& change, st
   event.after = snapshotTree(tree);
   event.before = event.after;
   undoRotations(event.before, event.rotations);
-  events.push_back(std::move(event));
+  stream.onEvent(event, index);
 }
 
-std::vector<TreeEvent> collectEvents(const SceneDescription& scene, const TreeViewSettings& settings,
-                                     std::vector<Aabb>& initialBoxes) {
+void collectEvents(const SceneDescription& scene, const TreeViewSettings& settings, std::vector<Aabb>& initialBoxes,
+                   EventStream& stream) {
   World world = buildWorld(scene);
   DynamicAabbTreeOptions options;
   options.margin = settings.margin;
   DynamicAabbTree tree(options);
   tree.setRotationLogEnabled(true);
-  std::vector<TreeEvent> events;
   initialBoxes = bodyBoxes(world);
   std::vector<int> proxies;
   for (std::size_t i = 0; i < initialBoxes.size(); ++i) {
@@ -210,7 +223,7 @@ std::vector<TreeEvent> collectEvents(const SceneDescription& scene, const TreeVi
           proxies.push_back(tree.createProxy(initialBoxes[i], static_cast<std::uint32_t>(i)));
           return proxies.back();
         },
-        events);
+        stream);
   }
   for (int step = 1; step <= settings.steps; ++step) {
     world.step();
@@ -223,19 +236,47 @@ std::vector<TreeEvent> collectEvents(const SceneDescription& scene, const TreeVi
             tree.moveProxy(proxies[i], boxes[i]);
             return proxies[i];
           },
-          events);
+          stream);
     }
   }
-  return events;
+}
+
+// Writes one event's frame pair and prints its line.
+void writeEvent(Panels& panels, const TreeEvent& event, int index) {
+  const TreeViewSettings& settings = panels.settings;
+  const render::Camera camera = treeCamera(event, double(settings.width) / settings.height);
+  char name[64];
+  for (const bool after : {false, true}) {
+    std::snprintf(name, sizeof name, "event_%03d_%s.png", index, after ? "after" : "before");
+    writeOutputPng((fs::path(settings.outputDirectory) / name).string(), renderEventFrame(panels, event, after, camera),
+                   "-o");
+  }
+  int grandchildSwaps = 0;
+  for (const RotationEvent& rotation : event.rotations)
+    grandchildSwaps += reshapedBy(rotation, event.after).size() == 2 ? 1 : 0;
+  std::printf("event %03d: %s, %zu rotations (%d grandchild swaps), SAR %.3f -> %.3f, height %d -> %d\n", index,
+              event.what.c_str(), event.rotations.size(), grandchildSwaps, event.before.surfaceAreaRatio(),
+              event.after.surfaceAreaRatio(), event.before.height(), event.after.height());
+}
+
+// Both panels side by side make one image: it must fit the image limits too.
+void checkPanelSize(const TreeViewSettings& settings, const std::string& text) {
+  if (settings.width < 400 || settings.height < 300) throw UsageError("--size: each panel needs at least 400x300");
+  const long long width = 2LL * settings.width;
+  if (width > limits::maxImageSide || width * settings.height > limits::maxImagePixels)
+    throw UsageError("--size: two " + text + " panels side by side make a " + std::to_string(width) + "x" +
+                     std::to_string(settings.height) + " image, over " + std::to_string(limits::maxImageSide) +
+                     " pixels a side or " + std::to_string(limits::maxImagePixels) + " pixels");
 }
 
 TreeViewSettings readSettings(const Arguments& arguments, const SceneDescription& scene) {
   TreeViewSettings settings;
   settings.outputDirectory = arguments.value("--output", sceneOutputFolder(scene.name, "tree_"));
-  std::tie(settings.width, settings.height) = parseSize(arguments.value("--size", "640x480"), "--size");
-  if (settings.width < 400 || settings.height < 300) throw UsageError("--size: each panel needs at least 400x300");
-  settings.maxEvents = arguments.positiveInt("--max-events", 12);
-  if (arguments.has("--steps")) settings.steps = arguments.positiveInt("--steps", 0);
+  const std::string size = arguments.value("--size", "640x480");
+  std::tie(settings.width, settings.height) = parseSize(size, "--size");
+  checkPanelSize(settings, size);
+  settings.maxEvents = arguments.positiveInt("--max-events", 12, limits::maxTreeEvents);
+  settings.steps = arguments.positiveInt("--steps", 0, static_cast<int>(limits::maxSteps));
   settings.margin = arguments.has("--margin") ? arguments.positiveDouble("--margin", 0.1) : 0.1;
   return settings;
 }
@@ -247,14 +288,17 @@ render::Image renderTreeRotationFrame(const SceneDescription& scene, int eventIn
   TreeViewSettings settings;
   settings.width = renderer.options().width;
   settings.height = renderer.options().height;
+  std::optional<TreeEvent> wanted;
+  EventStream stream{std::max(eventIndex + 1LL, 0LL), [&](const TreeEvent& event, int index) {
+                       if (index == eventIndex) wanted = event;
+                     }};
   std::vector<Aabb> boxes;
-  const std::vector<TreeEvent> events = collectEvents(scene, settings, boxes);
-  if (eventIndex < 0 || eventIndex >= static_cast<int>(events.size()))
-    throw std::invalid_argument("tree view: scene '" + scene.name + "' has " + std::to_string(events.size()) +
+  collectEvents(scene, settings, boxes, stream);
+  if (!wanted)
+    throw std::invalid_argument("tree view: scene '" + scene.name + "' has " + std::to_string(stream.count) +
                                 " rotating insertions, asked for event " + std::to_string(eventIndex));
   Panels panels{renderer, settings};
-  const TreeEvent& event = events[eventIndex];
-  return renderEventFrame(panels, event, after, treeCamera(event, double(settings.width) / settings.height));
+  return renderEventFrame(panels, *wanted, after, treeCamera(*wanted, double(settings.width) / settings.height));
 }
 
 int runTree(const std::vector<std::string>& args) {
@@ -280,29 +324,14 @@ int runTree(const std::vector<std::string>& args) {
   TreeViewSettings settings = readSettings(*parsed, scene);
   prepareOutputDirectory(settings.outputDirectory);
 
-  std::vector<Aabb> boxes;
-  const std::vector<TreeEvent> events = collectEvents(scene, settings, boxes);
   render::Renderer renderer({settings.width, settings.height, 0, readBackend(*parsed)});
   Panels panels{renderer, settings};
-  const int written = std::min(settings.maxEvents, static_cast<int>(events.size()));
-  for (int i = 0; i < written; ++i) {
-    const TreeEvent& event = events[i];
-    const render::Camera camera = treeCamera(event, double(settings.width) / settings.height);
-    char name[64];
-    for (const bool after : {false, true}) {
-      std::snprintf(name, sizeof name, "event_%03d_%s.png", i, after ? "after" : "before");
-      writeOutputPng((fs::path(settings.outputDirectory) / name).string(),
-                     renderEventFrame(panels, event, after, camera), "-o");
-    }
-    int grandchildSwaps = 0;
-    for (const RotationEvent& rotation : event.rotations)
-      grandchildSwaps += reshapedBy(rotation, event.after).size() == 2 ? 1 : 0;
-    std::printf("event %03d: %s, %zu rotations (%d grandchild swaps), SAR %.3f -> %.3f, height %d -> %d\n", i,
-                event.what.c_str(), event.rotations.size(), grandchildSwaps, event.before.surfaceAreaRatio(),
-                event.after.surfaceAreaRatio(), event.before.height(), event.after.height());
-  }
+  EventStream stream{settings.maxEvents, [&](const TreeEvent& event, int index) { writeEvent(panels, event, index); }};
+  std::vector<Aabb> boxes;
+  collectEvents(scene, settings, boxes, stream);
+  const int written = std::min(settings.maxEvents, stream.count);
   writePlot(boxes, settings, renderer, (fs::path(settings.outputDirectory) / "sar_height.png").string());
-  std::printf("%zu rotating events, wrote %d frame pairs and sar_height.png to %s\n", events.size(), written,
+  std::printf("%d rotating events, wrote %d frame pairs and sar_height.png to %s\n", stream.count, written,
               settings.outputDirectory.c_str());
   return 0;
 }

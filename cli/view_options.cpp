@@ -1,22 +1,43 @@
 #include "cli/view_options.h"
 
+#include <charconv>
 #include <cmath>
+#include <limits>
 #include <sstream>
+
+#include "cli/limits.h"
 
 namespace physdbg::cli {
 namespace {
 
-int parseIndex(const std::string& text, const std::string& option, const std::string& whole) {
-  std::size_t used = 0;
+// A whole number 0..maximum, digits only: no sign, no spaces, no overflow.
+int parseIndex(const std::string& text, const std::string& option, const std::string& whole, int maximum) {
   int value = -1;
-  try {
-    value = std::stoi(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || value < 0)
-    throw UsageError(option + ": expected non-negative whole numbers, got '" + whole + "'");
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < 0 || value > maximum)
+    throw UsageError(option + ": expected whole numbers from 0 to " + std::to_string(maximum) + ", got '" + whole +
+                     "'");
   return value;
+}
+
+// Frames 0 .. steps / K: the scene's own run, when it fits the frame limit.
+FrameRange defaultFrames(const SceneDescription& scene, int stepsPerFrame) {
+  const long long last = scene.steps / stepsPerFrame + 1;
+  if (last > limits::maxFrames)
+    throw UsageError("--frames: the scene's " + std::to_string(scene.steps) + " steps at " +
+                     std::to_string(stepsPerFrame) + " per frame make " + std::to_string(last) +
+                     " frames, more than " + std::to_string(limits::maxFrames) +
+                     "; choose a range with --frames or raise --steps-per-frame");
+  return {0, static_cast<int>(last)};
+}
+
+// Reaching the last frame simulates (last - 1) x K steps; bounded, computed without overflow.
+void checkRunLength(const FrameRange& frames, int stepsPerFrame) {
+  const long long steps = static_cast<long long>(frames.last - 1) * stepsPerFrame;
+  if (steps > limits::maxSteps)
+    throw UsageError("--frames/--steps-per-frame: frame " + std::to_string(frames.last - 1) + " at " +
+                     std::to_string(stepsPerFrame) + " steps per frame is " + std::to_string(steps) +
+                     " steps in, more than " + std::to_string(limits::maxSteps));
 }
 
 }  // namespace
@@ -52,10 +73,10 @@ FrameRange parseFrameRange(const std::string& text, const std::string& option) {
   const std::size_t colon = text.find(':');
   FrameRange range;
   if (colon == std::string::npos) {
-    range.last = parseIndex(text, option, text);
+    range.last = parseIndex(text, option, text, limits::maxFrames);
   } else {
-    range.first = parseIndex(text.substr(0, colon), option, text);
-    range.last = parseIndex(text.substr(colon + 1), option, text);
+    range.first = parseIndex(text.substr(0, colon), option, text, limits::maxFrames);
+    range.last = parseIndex(text.substr(colon + 1), option, text, limits::maxFrames);
   }
   if (range.last <= range.first)
     throw UsageError(option + ": '" + text + "' selects no frames (A:B renders frames A to B-1)");
@@ -65,9 +86,9 @@ FrameRange parseFrameRange(const std::string& text, const std::string& option) {
 std::pair<int, int> parseDepthRange(const std::string& text, const std::string& option) {
   const std::size_t colon = text.find(':');
   if (colon == std::string::npos) throw UsageError(option + ": expected A:B, got '" + text + "'");
-  const int low = parseIndex(text.substr(0, colon), option, text);
+  const int low = parseIndex(text.substr(0, colon), option, text, 1 << 30);
   const std::string upper = text.substr(colon + 1);
-  const int high = upper.empty() ? (1 << 30) : parseIndex(upper, option, text);
+  const int high = upper.empty() ? (1 << 30) : parseIndex(upper, option, text, 1 << 30);
   if (high < low) throw UsageError(option + ": '" + text + "' is an empty depth range");
   return {low, high};
 }
@@ -84,9 +105,10 @@ Vec3 parseVector(const std::string& text, const std::string& option) {
 
 ViewOptions readViewOptions(const Arguments& arguments, const SceneDescription& scene) {
   ViewOptions options;
-  options.stepsPerFrame = arguments.positiveInt("--steps-per-frame", 1);
-  options.frames.last = scene.steps / options.stepsPerFrame + 1;
-  if (arguments.has("--frames")) options.frames = parseFrameRange(arguments.value("--frames"), "--frames");
+  options.stepsPerFrame = arguments.positiveInt("--steps-per-frame", 1, static_cast<int>(limits::maxSteps));
+  options.frames = arguments.has("--frames") ? parseFrameRange(arguments.value("--frames"), "--frames")
+                                             : defaultFrames(scene, options.stepsPerFrame);
+  checkRunLength(options.frames, options.stepsPerFrame);
   std::tie(options.width, options.height) = parseSize(arguments.value("--size", "1280x720"), "--size");
   try {
     options.layers = debugdraw::parseLayers(arguments.value("--layers", scene.layers.value_or("shapes,aabbs,overlay")));
@@ -97,7 +119,7 @@ ViewOptions readViewOptions(const Arguments& arguments, const SceneDescription& 
     std::tie(options.treeMinDepth, options.treeMaxDepth) = parseDepthRange(arguments.value("--tree-depth"), "--tree-depth");
   if (arguments.has("--follow")) {
     const std::string body = arguments.value("--follow");
-    options.follow = parseIndex(body, "--follow", body);
+    options.follow = parseIndex(body, "--follow", body, std::numeric_limits<int>::max());
     if (*options.follow >= static_cast<int>(scene.bodies.size()))
       throw UsageError("--follow: scene '" + scene.name + "' has no body " + body + " (it has " +
                        std::to_string(scene.bodies.size()) + ")");
