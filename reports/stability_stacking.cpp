@@ -113,7 +113,7 @@ std::vector<StabilityCase> stackingCases() {
     cases.push_back({std::string("far_pyramid_") + text,
                      std::string("pyramid (base 10) offset by ") + text +
                          " m on every axis: relative positions within 1e-3 m of the one at the origin",
-                     "m", [distance](RunLength length) {
+                     "m", [distance = distance](RunLength length) {  // clang 14 cannot capture a binding
                        return runFarPyramid(distance, 10, length == RunLength::Test ? 120 : 600);
                      }});
   }
