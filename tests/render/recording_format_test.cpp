@@ -26,6 +26,18 @@ thread_local bool countAllocations = false;
 thread_local std::size_t allocatedBytes = 0;
 }  // namespace
 
+// Sanitizer builds keep their own allocator: replacing two of the many global
+// allocation functions there pairs a library's nothrow new with our free()
+// (libLLVM in llvmpipe does exactly that). They count nothing; the allocation
+// bounds are checked by the ordinary build.
+#if defined(__SANITIZE_ADDRESS__)
+#define PHYSDBG_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define PHYSDBG_SANITIZED 1
+#endif
+#endif
+#ifndef PHYSDBG_SANITIZED
 // Every call goes through these symbols, never an inlined or specialised copy:
 // GCC would see free() meet memory from operator new, and valgrind, which
 // replaces the symbols, would see a copy's malloc() freed by its delete.
@@ -42,6 +54,7 @@ PHYSDBG_WHOLE_FUNCTION void* operator new(std::size_t size) {
 PHYSDBG_WHOLE_FUNCTION void operator delete(void* memory) noexcept { std::free(memory); }
 PHYSDBG_WHOLE_FUNCTION void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
 #undef PHYSDBG_WHOLE_FUNCTION
+#endif
 
 namespace {
 
