@@ -6,6 +6,7 @@
 
 #include "engine/broadphase/dynamic_aabb_tree.h"
 #include "engine/broadphase/tree_debug_draw.h"
+#include "engine/collider_outline.h"
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/convex_mesh_collider.h"
@@ -69,10 +70,9 @@ void emitShape(const RigidBody& body, dd::Color color, const std::shared_ptr<con
   }
 }
 
+// The collider's true outline (engine/collider_outline.h), near white.
 void emitWire(const RigidBody& body, dd::Frame& frame) {
-  const Aabb local = body.collider().localBounds();
-  frame.wireBoxes.push_back({body.transform().apply(local.center()), body.orientation(), local.halfExtents(),
-                             {0.95f, 0.95f, 0.95f, 1.0f}});
+  emitOutline(body.collider(), body.transform(), {0.95f, 0.95f, 0.95f, 1.0f}, frame);
 }
 
 dd::Color shade(dd::Color color, float factor) {

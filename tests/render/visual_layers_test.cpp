@@ -100,3 +100,40 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<LayerCase>& info) { return std::string(info.param.layer); });
 
 }  // namespace
+
+// The `wire` layer draws a sphere as circles, not as the box around it: seen
+// head-on, a lone sphere's outline covers its silhouette circle and leaves
+// the corners of its bounding square dark (a box outline would light them).
+namespace {
+
+TEST(WireLayer, DrawsASphereAsACircleNotItsBoundingBox) {
+  const physdbg::SceneDescription scene = physdbg::parseScene(
+      R"({"name": "lone sphere", "bodies": [{"shape": {"sphere": {"radius": 1}}, "position": [0, 0, 0]}]})",
+      "lone sphere");
+  const physdbg::World world = physdbg::buildWorld(scene);
+  dd::Frame frame;
+  world.emitDebugDraw(dd::parseLayers("wire"), frame);
+  constexpr int smallWidth = 160, smallHeight = 120;
+  physdbg::render::Camera camera;  // looking down -z at the origin
+  camera.orthographic = true;
+  camera.orthoHeight = 3;  // 40 px per metre: the sphere is 80 px across
+  const physdbg::render::Image image = physdbg::render::Renderer({smallWidth, smallHeight, 0}).render(frame, camera);
+  const auto wireNear = [&](const Eigen::Vector3d& point, int reach) {
+    const Eigen::Vector2d pixel = projectToPixel(camera, smallWidth, smallHeight, point);
+    int count = 0;
+    for (int dy = -reach; dy <= reach; ++dy)
+      for (int dx = -reach; dx <= reach; ++dx)
+        count += physdbg::render::testing::isBackground(
+                     pixelAt(image, int(pixel.x()) + dx, int(pixel.y()) + dy)) ? 0 : 1;
+    return count;
+  };
+  for (const Eigen::Vector3d& corner : {Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(-1, 1, 0),
+                                       Eigen::Vector3d(1, -1, 0), Eigen::Vector3d(-1, -1, 0)})
+    EXPECT_EQ(wireNear(corner, 3), 0) << "bounding-square corner " << corner.transpose();
+  for (int step = 0; step < 16; ++step) {
+    const double angle = 2 * M_PI * (step + 0.5) / 16;  // between the circle's own vertices
+    EXPECT_GT(wireNear({std::cos(angle), std::sin(angle), 0}, 1), 0) << "circle at angle " << angle;
+  }
+}
+
+}  // namespace
