@@ -3,6 +3,8 @@
 // Positions are double so that a scene 1e7 m from the origin still draws
 // correctly: the renderer subtracts its camera origin before going to float.
 // A Frame is plain data, so it can be recorded, replayed, or compared.
+#include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -52,6 +54,17 @@ struct LayerSet {
   bool has(Layer layer) const { return (bits & static_cast<std::uint32_t>(layer)) != 0; }
   void add(Layer layer) { bits |= static_cast<std::uint32_t>(layer); }
   bool empty() const { return bits == 0; }
+};
+
+// Primitives each layer added, summed over frames: how a caller tells a
+// requested layer that drew nothing (no contacts, no tree) from a broken one.
+struct LayerCounts {
+  std::array<std::size_t, 32> primitives{};  // by the layer's bit number
+  void add(Layer layer, std::size_t count) { primitives[bitNumber(layer)] += count; }
+  std::size_t of(Layer layer) const { return primitives[bitNumber(layer)]; }
+
+ private:
+  static int bitNumber(Layer layer) { return std::countr_zero(static_cast<std::uint32_t>(layer)); }
 };
 
 // Parses "shapes,aabbs,..." into a set. Throws std::invalid_argument naming the

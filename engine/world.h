@@ -110,8 +110,10 @@ class World {
   const DynamicAabbTree* tree() const;
 
   // Appends the primitives of the requested layers; computes nothing for the
-  // layers that are not requested.
-  void emitDebugDraw(debugdraw::LayerSet layers, debugdraw::Frame& frame) const;
+  // layers that are not requested. With `counts`, adds how many primitives
+  // each layer appended, so a caller can say which layer drew nothing.
+  void emitDebugDraw(debugdraw::LayerSet layers, debugdraw::Frame& frame,
+                     debugdraw::LayerCounts* counts = nullptr) const;
 
  private:
   void applyForces();

@@ -118,8 +118,14 @@ void emitManifoldPoints(const std::vector<ContactManifold>& manifolds, double to
 
 }  // namespace
 
-void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame) const {
+void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts* counts) const {
   if (layers.empty()) return;
+  // Runs one layer's emission; when counting, adds what it put in the frame to that layer.
+  const auto counted = [&frame, counts](dd::Layer layer, const auto& emit) {
+    const std::size_t before = counts ? frame.primitiveCount() : 0;
+    emit();
+    if (counts) counts->add(layer, frame.primitiveCount() - before);
+  };
   std::vector<std::shared_ptr<const dd::TriangleMesh>> meshes;
   if (layers.has(dd::Layer::Shapes)) meshes = hullMeshes();
   double typicalSize = 0;
@@ -130,38 +136,51 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame) const {
     if (!body.isStatic()) typicalSize = std::max(typicalSize, box.halfExtents().maxCoeff());
     if (layers.has(dd::Layer::Shapes)) {
       dd::Color color = body.isStatic() ? dd::colors::staticBody : bodyColor(i);
-      if (layers.has(dd::Layer::Sleep) && asleep_[i]) color = shade(color, 0.35f);
-      emitShape(body, color, meshes[i], frame);
+      if (layers.has(dd::Layer::Sleep) && asleep_[i]) {
+        color = shade(color, 0.35f);
+        if (counts) counts->add(dd::Layer::Sleep, 1);  // the darkened body is what the layer drew
+      }
+      counted(dd::Layer::Shapes, [&] { emitShape(body, color, meshes[i], frame); });
     }
-    if (layers.has(dd::Layer::Wire)) emitWire(body, frame);
+    if (layers.has(dd::Layer::Wire)) counted(dd::Layer::Wire, [&] { emitWire(body, frame); });
     if (layers.has(dd::Layer::Aabbs))
-      frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(),
-                                 touching_[i] ? dd::colors::colliding : dd::colors::tightBox});
-    if (layers.has(dd::Layer::Fat) && proxies_[i] >= 0) {
-      const Aabb& fat = broadPhase_->fatBox(proxies_[i]);
-      frame.wireBoxes.push_back({fat.center(), Quat::Identity(), fat.halfExtents(), dd::colors::fatBox});
-    }
+      counted(dd::Layer::Aabbs, [&] {
+        frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(),
+                                   touching_[i] ? dd::colors::colliding : dd::colors::tightBox});
+      });
+    if (layers.has(dd::Layer::Fat) && proxies_[i] >= 0)
+      counted(dd::Layer::Fat, [&] {
+        const Aabb& fat = broadPhase_->fatBox(proxies_[i]);
+        frame.wireBoxes.push_back({fat.center(), Quat::Identity(), fat.halfExtents(), dd::colors::fatBox});
+      });
     if (layers.has(dd::Layer::Velocities) && !body.isStatic() && body.linearVelocity() != Vec3::Zero())
-      frame.arrows.push_back({body.position(), body.position() + body.linearVelocity() * 0.1, {0.3f, 0.9f, 1.0f, 1}});
+      counted(dd::Layer::Velocities, [&] {
+        frame.arrows.push_back({body.position(), body.position() + body.linearVelocity() * 0.1, {0.3f, 0.9f, 1.0f, 1}});
+      });
     if (layers.has(dd::Layer::Sleep) && !layers.has(dd::Layer::Shapes) && asleep_[i])
-      frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), {0.5f, 0.3f, 0.7f, 1}});
+      counted(dd::Layer::Sleep, [&] {
+        frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), {0.5f, 0.3f, 0.7f, 1}});
+      });
   }
-  if (layers.has(dd::Layer::Tree)) {
-    TreeDrawOptions options;
-    options.leaves = false;  // the fat boxes are the `fat` layer
-    if (const DynamicAabbTree* broadPhaseTree = tree()) drawTree(*broadPhaseTree, options, frame);
-  }
-  if (layers.has(dd::Layer::Contacts)) {
-    const double scale = std::max(typicalSize, 0.2);
-    if (settings_.solver.kind == SolverKind::SequentialImpulse)
-      emitManifoldPoints(manifolds_, settings_.solver.linearSlop, scale, frame);
-    else
-      emitContacts(contacts_, scale, frame);
-  }
-  if (layers.has(dd::Layer::Pairs)) {
-    for (const BodyPair& pair : pairs_)
-      frame.lines.push_back({bodies_[pair.a].position(), bodies_[pair.b].position(), {0.9f, 0.5f, 0.9f, 1}});
-  }
+  if (layers.has(dd::Layer::Tree))
+    counted(dd::Layer::Tree, [&] {
+      TreeDrawOptions options;
+      options.leaves = false;  // the fat boxes are the `fat` layer
+      if (const DynamicAabbTree* broadPhaseTree = tree()) drawTree(*broadPhaseTree, options, frame);
+    });
+  if (layers.has(dd::Layer::Contacts))
+    counted(dd::Layer::Contacts, [&] {
+      const double scale = std::max(typicalSize, 0.2);
+      if (settings_.solver.kind == SolverKind::SequentialImpulse)
+        emitManifoldPoints(manifolds_, settings_.solver.linearSlop, scale, frame);
+      else
+        emitContacts(contacts_, scale, frame);
+    });
+  if (layers.has(dd::Layer::Pairs))
+    counted(dd::Layer::Pairs, [&] {
+      for (const BodyPair& pair : pairs_)
+        frame.lines.push_back({bodies_[pair.a].position(), bodies_[pair.b].position(), {0.9f, 0.5f, 0.9f, 1}});
+    });
 }
 
 // One drawing mesh per convex collider, shared by the bodies that share it;
