@@ -1,17 +1,30 @@
 // physdbg record: simulates a scene and writes every frame's primitives and
 // view to a recording (debugdraw/recording.h), without rendering.
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/numerical_faults.h"
+#include "cli/output_folder.h"
 #include "cli/progress_bar.h"
 #include "cli/scene_frames.h"
 #include "debugdraw/recording.h"
 #include "scenes/scene.h"
 
 namespace physdbg::cli {
+namespace {
+
+// -o missing/dir/x.rec creates missing/dir, as render creates its -o folder.
+// An existing folder is left to the writer, which names the path on failure.
+void createParentFolder(const std::string& path) {
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  std::error_code error;
+  if (!folder.empty() && !std::filesystem::exists(folder, error)) prepareOutputDirectory(folder.string(), "-o");
+}
+
+}  // namespace
 
 int runRecord(const std::vector<std::string>& args) {
   CommandSpec spec{
@@ -30,6 +43,7 @@ int runRecord(const std::vector<std::string>& args) {
   const SceneDescription scene = resolveScene(parsed->positional()[0]);
   const ViewOptions options = readViewOptions(*parsed, scene);
   const std::string path = parsed->value("--output");
+  createParentFolder(path);
   std::unique_ptr<debugdraw::RecordingWriter> writer;
   try {
     writer = std::make_unique<debugdraw::RecordingWriter>(path);
@@ -50,6 +64,7 @@ int runRecord(const std::vector<std::string>& args) {
   progress.finish();
   std::printf("recorded frames %d..%d of %s to %s\n", options.frames.first, options.frames.last - 1,
               scene.name.c_str(), path.c_str());
+  reportBlankLayers("record", options, frames.layerCounts());
   return reportNumericalFaults("record", frames.world());
 }
 

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -34,22 +35,25 @@ std::string escapePercent(const std::string& text) {
 // ffmpeg as an argument vector (reports/child_process.h): no shell sees the
 // folder or the video path. "file:" makes ffmpeg take each path literally: not
 // as a protocol ("http:..."), nor as an option when it starts with '-'.
+// -frames:v stops at this run's last frame: a frame file after it, left by
+// another run, never reaches the video.
 ChildCommand videoCommand(const std::string& ffmpeg, const std::string& directory, const std::string& video,
-                          double framesPerSecond, int firstFrame) {
+                          double framesPerSecond, const FrameRange& frames) {
   char rate[32];
   std::snprintf(rate, sizeof rate, "%.6g", framesPerSecond);
   ChildCommand command;
   command.program = ffmpeg;
   command.arguments = {"-nostdin", "-y", "-loglevel", "error", "-framerate", rate, "-start_number",
-                       std::to_string(firstFrame), "-f", "image2", "-i",
-                       "file:" + escapePercent(directory) + "/frame_%05d.png", "-c:v", "libx264", "-pix_fmt",
-                       "yuv420p", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "file:" + video};
+                       std::to_string(frames.first), "-f", "image2", "-i",
+                       "file:" + escapePercent(directory) + "/frame_%05d.png", "-frames:v",
+                       std::to_string(frames.count()), "-c:v", "libx264", "-pix_fmt", "yuv420p", "-vf",
+                       "pad=ceil(iw/2)*2:ceil(ih/2)*2", "file:" + video};
   return command;
 }
 
 void encodeVideo(const std::string& ffmpeg, const std::string& directory, const std::string& video,
-                 double framesPerSecond, int firstFrame) {
-  const ChildExit exit = runChild(videoCommand(ffmpeg, directory, video, framesPerSecond, firstFrame));
+                 double framesPerSecond, const FrameRange& frames) {
+  const ChildExit exit = runChild(videoCommand(ffmpeg, directory, video, framesPerSecond, frames));
   if (!exit.succeeded()) throw std::runtime_error("ffmpeg failed to write '" + video + "' (" + exit.describe() + ")");
 }
 
@@ -62,6 +66,18 @@ std::string prepareVideo(const std::string& video) {
   return *ffmpeg;
 }
 
+// Frame files of an earlier run would pass for this run's. A whole run owns
+// the folder and clears every frame file; a slice (--frames A:B) shares the
+// folder with the processes drawing the other slices, so it clears only its
+// own frames A..B-1.
+void removeEarlierFrames(const std::string& directory, const FrameRange& frames) {
+  const int removed = frames.slice ? removeFrames(directory, frames.first, frames.last, "-o")
+                                   : removeFrames(directory, 0, std::numeric_limits<int>::max(), "-o");
+  if (removed > 0)
+    std::printf("removed %d frame file%s of an earlier run from %s\n", removed, removed == 1 ? "" : "s",
+                directory.c_str());
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& args) {
@@ -71,7 +87,9 @@ int runRender(const std::vector<std::string>& args) {
       "[camera options] [--backend osmesa|egl]",
       "Simulates SCENE (a built-in name or a scene file) and writes DIR/frame_00000.png, frame_00001.png, ...\n"
       "Frame 0 is the initial state; each later frame advances K steps. With --frames A:B only frames A..B-1\n"
-      "are drawn (earlier ones are simulated), so several processes can render one run into one folder.",
+      "are drawn (earlier ones are simulated), so several processes can render one run into one folder.\n"
+      "Frame files of an earlier run are removed first: every frame_NNNNN.png in DIR, or with --frames A:B\n"
+      "only frames A..B-1 (the other slices belong to the other processes).",
       {{"--output", "-o", "DIR", "output folder (default out/SCENE)"},
        {"--video", "", "FILE.mp4", "also encode the frames into a video with ffmpeg"}},
       1,
@@ -86,6 +104,7 @@ int runRender(const std::vector<std::string>& args) {
   const std::string video = parsed->value("--video");
   const std::string ffmpeg = parsed->has("--video") ? prepareVideo(video) : "";
   prepareOutputDirectory(outputDirectory);
+  removeEarlierFrames(outputDirectory, options.frames);
 
   SceneFrames frames(scene, options);
   render::Renderer renderer({options.width, options.height, 0, readBackend(*parsed)});
@@ -114,9 +133,10 @@ int runRender(const std::vector<std::string>& args) {
               1e3 * frames.simulateSeconds() / count, 1e3 * (frames.drawSeconds() + drawSeconds) / count,
               1e3 * writers.encodeSeconds() / count, pool.workers, 1e3 * wall / count);
   if (!ffmpeg.empty()) {
-    encodeVideo(ffmpeg, outputDirectory, video, 1.0 / (scene.world.dt * options.stepsPerFrame), options.frames.first);
+    encodeVideo(ffmpeg, outputDirectory, video, 1.0 / (scene.world.dt * options.stepsPerFrame), options.frames);
     std::printf("wrote video %s\n", video.c_str());
   }
+  reportBlankLayers("render", options, frames.layerCounts());
   return reportNumericalFaults("render", frames.world());
 }
 

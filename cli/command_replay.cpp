@@ -1,5 +1,6 @@
 // physdbg replay: renders a recording to PNGs with no engine involved. A
 // frame range lets several processes share one long recording.
+#include <algorithm>
 #include <cstdio>
 #include <limits>
 
@@ -13,6 +14,34 @@
 #include "render/renderer.h"
 
 namespace physdbg::cli {
+namespace {
+
+// "frames 0..59 (60 frames)", "no frames": read in full, only when a replay
+// drew nothing, to say what the recording holds instead.
+std::string describeFrames(const std::string& path) {
+  debugdraw::RecordingReader reader(path);
+  debugdraw::RecordedFrame frame;
+  int count = 0, lowest = std::numeric_limits<int>::max(), highest = -1;
+  while (reader.next(frame)) {
+    ++count;
+    lowest = std::min(lowest, frame.index);
+    highest = std::max(highest, frame.index);
+  }
+  if (count == 0) return "no frames";
+  return "frames " + std::to_string(lowest) + ".." + std::to_string(highest) + " (" + std::to_string(count) +
+         (count == 1 ? " frame)" : " frames)");
+}
+
+// A replay that drew no frame leaves the user a folder of nothing: refuse it.
+void checkSomethingReplayed(int written, const std::string& path, const Arguments& arguments) {
+  if (written > 0) return;
+  const std::string holds = "'" + path + "' has " + describeFrames(path);
+  if (arguments.has("--frames"))
+    throw UsageError("--frames: '" + arguments.value("--frames") + "' selects no frame of the recording; " + holds);
+  throw UsageError(holds);
+}
+
+}  // namespace
 
 int runReplay(const std::vector<std::string>& args) {
   const CommandSpec spec{
@@ -45,6 +74,7 @@ int runReplay(const std::vector<std::string>& args) {
     ++written;
   }
   writers.finish();
+  checkSomethingReplayed(written, parsed->positional()[0], *parsed);
   std::printf("replayed %d frames to %s\n", written, directory.c_str());
   return 0;
 }

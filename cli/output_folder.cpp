@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <vector>
 
 namespace physdbg::cli {
 
@@ -17,6 +18,19 @@ constexpr std::size_t maxFileNameLength = 64;
 
 bool isPlainNameCharacter(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
+}
+
+// The frame number of a file framePath could have written, or -1: "frame_",
+// five or more digits without a superfluous leading zero, ".png".
+int frameNumber(const std::string& fileName) {
+  const std::string prefix = "frame_", suffix = ".png";
+  if (fileName.size() < prefix.size() + 5 + suffix.size() || !fileName.starts_with(prefix) ||
+      !fileName.ends_with(suffix))
+    return -1;
+  const std::string digits = fileName.substr(prefix.size(), fileName.size() - prefix.size() - suffix.size());
+  if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return -1;
+  const int number = std::stoi(digits);
+  return fs::path(framePath("", number)).filename() == fileName ? number : -1;
 }
 
 }  // namespace
@@ -78,6 +92,22 @@ std::string framePath(const std::string& directory, int index) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%05d.png", index);
   return (fs::path(directory) / name).string();
+}
+
+int removeFrames(const std::string& directory, int first, int last, const std::string& option) {
+  std::vector<fs::path> stale;
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
+    const int number = frameNumber(entry.path().filename().string());
+    std::error_code kind;
+    if (number >= first && number < last && !entry.is_directory(kind)) stale.push_back(entry.path());
+  }
+  if (error) throw UsageError(option + ": cannot list folder '" + directory + "': " + error.message());
+  for (const fs::path& path : stale) {
+    if (!fs::remove(path, error) && error)
+      throw UsageError(option + ": cannot remove '" + path.string() + "' left by an earlier run: " + error.message());
+  }
+  return static_cast<int>(stale.size());
 }
 
 }  // namespace physdbg::cli

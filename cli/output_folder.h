@@ -40,4 +40,10 @@ std::string sceneOutputFolder(const std::string& sceneName, const std::string& p
 // DIR/frame_00042.png: the global frame index, whatever range a run renders.
 std::string framePath(const std::string& directory, int index);
 
+// Removes the frame files (names exactly as framePath writes them) numbered
+// first..last-1 from `directory`, so frames of an earlier, longer run cannot
+// pass for this run's; every other file stays. Returns how many it removed.
+// Throws UsageError naming `option` when one cannot be removed.
+int removeFrames(const std::string& directory, int first, int last, const std::string& option);
+
 }  // namespace physdbg::cli

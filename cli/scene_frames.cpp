@@ -98,30 +98,54 @@ render::Camera SceneFrames::camera() {
   return camera;
 }
 
-dd::RecordedFrame SceneFrames::frame(int index) {
-  advanceTo(index);
-  const auto start = Clock::now();
-  dd::RecordedFrame out;
-  out.index = index;
+// The engine's layers, and the tree limited to --tree-depth drawn here.
+void SceneFrames::drawLayers(dd::Frame& out) {
   dd::LayerSet layers = options_.layers;
   const bool limitTree = layers.has(dd::Layer::Tree) && (options_.treeMinDepth > 0 || options_.treeMaxDepth < (1 << 30));
   if (limitTree) layers.bits &= ~static_cast<std::uint32_t>(dd::Layer::Tree);
-  world_.emitDebugDraw(layers, out.frame);
+  world_.emitDebugDraw(layers, out, &layerCounts_);
   if (limitTree && world_.tree()) {
     TreeDrawOptions tree;
     tree.leaves = false;
     tree.minDepth = options_.treeMinDepth;
     tree.maxDepth = options_.treeMaxDepth;
-    drawTree(*world_.tree(), tree, out.frame);
+    const std::size_t before = out.primitiveCount();
+    drawTree(*world_.tree(), tree, out);
+    layerCounts_.add(dd::Layer::Tree, out.primitiveCount() - before);
   }
-  if (layers.has(dd::Layer::Overlay))
-    addOverlay(scene_, world_,
-               {index, options_.frames.last - 1, options_.timing ? std::optional<double>(lastStepMs_) : std::nullopt,
-                options_.width},
-               out.frame);
+}
+
+void SceneFrames::drawOverlay(int index, dd::Frame& out) {
+  if (!options_.layers.has(dd::Layer::Overlay)) return;
+  const std::size_t before = out.primitiveCount();
+  addOverlay(
+      scene_, world_,
+      {index, options_.runFrames, options_.timing ? std::optional<double>(lastStepMs_) : std::nullopt, options_.width},
+      out);
+  layerCounts_.add(dd::Layer::Overlay, out.primitiveCount() - before);
+}
+
+dd::RecordedFrame SceneFrames::frame(int index) {
+  advanceTo(index);
+  const auto start = Clock::now();
+  dd::RecordedFrame out;
+  out.index = index;
+  drawLayers(out.frame);
+  drawOverlay(index, out.frame);
   out.view = toView(camera());
   drawSeconds_ += secondsSince(start);
   return out;
+}
+
+void reportBlankLayers(const std::string& command, const ViewOptions& options, const dd::LayerCounts& counts) {
+  const std::string frames = options.frames.count() == 1 ? "frame " + std::to_string(options.frames.first)
+                                                         : "frames " + std::to_string(options.frames.first) + ".." +
+                                                               std::to_string(options.frames.last - 1);
+  for (const auto& [name, layer] : dd::allLayers()) {
+    if (options.layers.has(layer) && counts.of(layer) == 0)
+      std::fprintf(stderr, "physdbg %s: layer '%s' drew nothing in %s\n", command.c_str(), name.c_str(),
+                   frames.c_str());
+  }
 }
 
 }  // namespace physdbg::cli

@@ -20,11 +20,15 @@ class SceneFrames {
   debugdraw::RecordedFrame frame(int index);
 
   const World& world() const { return world_; }
+  // Primitives each layer drew in the frames asked for so far.
+  const debugdraw::LayerCounts& layerCounts() const { return layerCounts_; }
   double simulateSeconds() const { return simulateSeconds_; }
   double drawSeconds() const { return drawSeconds_; }
 
  private:
   void advanceTo(int index);
+  void drawLayers(debugdraw::Frame& out);
+  void drawOverlay(int index, debugdraw::Frame& out);
   render::Camera camera();
 
   const SceneDescription& scene_;
@@ -33,7 +37,13 @@ class SceneFrames {
   int current_ = 0;
   double lastStepMs_ = 0, simulateSeconds_ = 0, drawSeconds_ = 0;
   std::optional<render::Camera> initialCamera_;
+  debugdraw::LayerCounts layerCounts_;
 };
+
+// After a run: one line on stderr per requested layer that drew nothing in
+// any of the frames, e.g. "physdbg render: layer 'contacts' drew nothing in
+// frames 0..59". A blank layer is a fact about the scene, not a failure.
+void reportBlankLayers(const std::string& command, const ViewOptions& options, const debugdraw::LayerCounts& counts);
 
 render::Camera toCamera(const debugdraw::View& view);
 debugdraw::View toView(const render::Camera& camera);

@@ -8,9 +8,10 @@ namespace physdbg::cli {
 void addOverlay(const SceneDescription& scene, const World& world, const OverlayCounters& counters,
                 debugdraw::Frame& out) {
   char line[256];
-  const std::string progress = counters.frame && counters.frames
-                                   ? "frame " + std::to_string(*counters.frame) + "/" + std::to_string(*counters.frames)
-                                   : "step " + std::to_string(world.stepCount());
+  const std::string progress =
+      counters.frame && counters.frames
+          ? "frame " + std::to_string(*counters.frame) + " of " + std::to_string(*counters.frames)
+          : "step " + std::to_string(world.stepCount());
   std::snprintf(line, sizeof line, "%s   %s   t = %.3f s", scene.name.c_str(), progress.c_str(), world.time());
   const float scale = counters.imageWidth >= 800 ? 2.0f : 1.0f;
   out.texts.push_back({6 * scale, 5 * scale, scale, line, {1, 1, 1, 1}});

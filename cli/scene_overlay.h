@@ -9,7 +9,9 @@
 namespace physdbg::cli {
 
 struct OverlayCounters {
-  std::optional<int> frame, frames;  // "frame 3/10" when both are given
+  // "frame 3 of 60" when both are given: `frames` counts the whole run, not
+  // the slice one process draws, so every slice of a shared run reads alike.
+  std::optional<int> frame, frames;
   std::optional<double> stepMs;      // measured wall-clock time: leave empty for repeatable pictures
   int imageWidth = 1280;             // text is drawn at half size below 800 pixels, so it fits
 };

@@ -1,5 +1,6 @@
 #include "cli/view_options.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -40,6 +41,32 @@ void checkRunLength(const FrameRange& frames, int stepsPerFrame) {
                      " steps in, more than " + std::to_string(limits::maxSteps));
 }
 
+// The whole run's frame count: N for --frames N; for a slice A:B the scene's
+// own run, or B when the slice reaches past it (not rejected: a user may
+// render past the scene's steps).
+int runFrameCount(const FrameRange& frames, const SceneDescription& scene, int stepsPerFrame) {
+  if (!frames.slice) return frames.last;
+  const long long sceneFrames = scene.steps / stepsPerFrame + 1;
+  return static_cast<int>(std::max<long long>(sceneFrames, frames.last));
+}
+
+// --tree-depth limits the tree layer: without that layer it would draw nothing.
+void checkTreeDepthHasTree(const Arguments& arguments, const SceneDescription& scene, debugdraw::LayerSet layers) {
+  if (!arguments.has("--tree-depth") || layers.has(debugdraw::Layer::Tree)) return;
+  const std::string source = arguments.has("--layers") ? "--layers" : scene.layers ? "the scene's" : "the default";
+  throw UsageError("--tree-depth: it limits the 'tree' layer, which is not among the layers (" +
+                   debugdraw::layerNames(layers) + ", from " + source + "); add tree to --layers");
+}
+
+// --layers, else the scene's layers, else shapes,aabbs,overlay.
+debugdraw::LayerSet readLayers(const Arguments& arguments, const SceneDescription& scene) {
+  try {
+    return debugdraw::parseLayers(arguments.value("--layers", scene.layers.value_or("shapes,aabbs,overlay")));
+  } catch (const std::invalid_argument& error) {
+    throw UsageError(std::string("--layers: ") + error.what());
+  }
+}
+
 }  // namespace
 
 std::vector<OptionSpec> viewOptionSpecs() {
@@ -47,7 +74,8 @@ std::vector<OptionSpec> viewOptionSpecs() {
           {"--size", "", "WxH", "image size in pixels (default 1280x720)"},
           {"--layers", "", "LIST", "comma list of debug layers: shapes, wire, aabbs, fat, tree, contacts, velocities, "
                                    "sleep, pairs, overlay (default: the scene's, else shapes,aabbs,overlay)"},
-          {"--tree-depth", "", "A:B", "draw only tree nodes of depth A..B (root 0; 'A:' for no upper limit)"},
+          {"--tree-depth", "", "A:B",
+           "draw only tree nodes of depth A..B (root 0; 'A:' for no upper limit; needs the tree layer)"},
           {"--steps-per-frame", "", "K", "simulation steps between frames (default 1)"},
           {"--follow", "", "BODY", "keep body number BODY at the centre of the view"},
           {"--eye", "", "X,Y,Z", "camera position"},
@@ -77,6 +105,7 @@ FrameRange parseFrameRange(const std::string& text, const std::string& option) {
   } else {
     range.first = parseIndex(text.substr(0, colon), option, text, limits::maxFrames);
     range.last = parseIndex(text.substr(colon + 1), option, text, limits::maxFrames);
+    range.slice = true;
   }
   if (range.last <= range.first)
     throw UsageError(option + ": '" + text + "' selects no frames (A:B renders frames A to B-1)");
@@ -109,12 +138,10 @@ ViewOptions readViewOptions(const Arguments& arguments, const SceneDescription& 
   options.frames = arguments.has("--frames") ? parseFrameRange(arguments.value("--frames"), "--frames")
                                              : defaultFrames(scene, options.stepsPerFrame);
   checkRunLength(options.frames, options.stepsPerFrame);
+  options.runFrames = runFrameCount(options.frames, scene, options.stepsPerFrame);
   std::tie(options.width, options.height) = parseSize(arguments.value("--size", "1280x720"), "--size");
-  try {
-    options.layers = debugdraw::parseLayers(arguments.value("--layers", scene.layers.value_or("shapes,aabbs,overlay")));
-  } catch (const std::invalid_argument& error) {
-    throw UsageError(std::string("--layers: ") + error.what());
-  }
+  options.layers = readLayers(arguments, scene);
+  checkTreeDepthHasTree(arguments, scene, options.layers);
   if (arguments.has("--tree-depth"))
     std::tie(options.treeMinDepth, options.treeMaxDepth) = parseDepthRange(arguments.value("--tree-depth"), "--tree-depth");
   if (arguments.has("--follow")) {

@@ -14,11 +14,15 @@ namespace physdbg::cli {
 
 struct FrameRange {
   int first = 0, last = 0;  // frames first .. last-1
+  // Given as A:B: a slice of a run that other processes may be drawing into
+  // the same folder, so this run owns only its own frames there.
+  bool slice = false;
   int count() const { return last - first; }
 };
 
 struct ViewOptions {
   FrameRange frames;
+  int runFrames = 0;  // frames in the whole run, of which `frames` may be a slice: the overlay's "of N"
   int stepsPerFrame = 1;
   int width = 1280, height = 720;
   debugdraw::LayerSet layers;
@@ -33,7 +37,8 @@ struct ViewOptions {
 // The option rows for a CommandSpec.
 std::vector<OptionSpec> viewOptionSpecs();
 
-// "N" (frames 0..N-1) or "A:B" (frames A..B-1). Throws UsageError naming `option`.
+// "N" (frames 0..N-1) or "A:B" (frames A..B-1, a slice). Throws UsageError
+// naming `option`, also for a range with no frame in it ("5:5").
 FrameRange parseFrameRange(const std::string& text, const std::string& option);
 // "A:B" depth range, inclusive; "A:" means no upper limit.
 std::pair<int, int> parseDepthRange(const std::string& text, const std::string& option);

@@ -5,6 +5,16 @@
 
 namespace physdbg::debugdraw {
 
+namespace {
+
+std::string validLayerNames() {
+  std::string valid;
+  for (const auto& entry : allLayers()) valid += (valid.empty() ? "" : ", ") + entry.first;
+  return valid;
+}
+
+}  // namespace
+
 const std::vector<std::pair<std::string, Layer>>& allLayers() {
   static const std::vector<std::pair<std::string, Layer>> layers = {
       {"shapes", Layer::Shapes}, {"wire", Layer::Wire},         {"aabbs", Layer::Aabbs},
@@ -27,12 +37,9 @@ LayerSet parseLayers(const std::string& list) {
         found = true;
       }
     }
-    if (!found) {
-      std::string valid;
-      for (const auto& entry : allLayers()) valid += (valid.empty() ? "" : ", ") + entry.first;
-      throw std::invalid_argument("unknown layer '" + name + "' (valid: " + valid + ")");
-    }
+    if (!found) throw std::invalid_argument("unknown layer '" + name + "' (valid: " + validLayerNames() + ")");
   }
+  if (set.empty()) throw std::invalid_argument("no layer given in '" + list + "' (valid: " + validLayerNames() + ")");
   return set;
 }
 

@@ -68,7 +68,8 @@ struct LayerCounts {
 };
 
 // Parses "shapes,aabbs,..." into a set. Throws std::invalid_argument naming the
-// unknown layer. The empty string gives the empty set.
+// unknown layer, or saying no layer was given ("", ","): asking for no layer
+// draws blank frames, which is never what a user meant.
 LayerSet parseLayers(const std::string& list);
 std::string layerNames(LayerSet set);
 const std::vector<std::pair<std::string, Layer>>& allLayers();
