@@ -24,6 +24,16 @@ const std::vector<std::pair<std::string, Layer>>& allLayers() {
   return layers;
 }
 
+namespace {
+
+// Lists come from command lines and scene files: quote at most a short piece.
+std::string shortened(const std::string& text) {
+  constexpr std::size_t limit = 48;
+  return text.size() <= limit ? text : text.substr(0, limit) + "... (" + std::to_string(text.size()) + " bytes)";
+}
+
+}  // namespace
+
 LayerSet parseLayers(const std::string& list) {
   LayerSet set;
   std::stringstream stream(list);
@@ -37,9 +47,9 @@ LayerSet parseLayers(const std::string& list) {
         found = true;
       }
     }
-    if (!found) throw std::invalid_argument("unknown layer '" + name + "' (valid: " + validLayerNames() + ")");
+    if (!found) throw std::invalid_argument("unknown layer '" + shortened(name) + "' (valid: " + validLayerNames() + ")");
   }
-  if (set.empty()) throw std::invalid_argument("no layer given in '" + list + "' (valid: " + validLayerNames() + ")");
+  if (set.empty()) throw std::invalid_argument("no layer given in '" + shortened(list) + "' (valid: " + validLayerNames() + ")");
   return set;
 }
 

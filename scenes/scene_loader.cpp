@@ -224,7 +224,7 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
     try {
       debugdraw::parseLayers(*scene.layers);
     } catch (const std::invalid_argument& error) {
-      reader.fail("layers", excerpt(error.what()));
+      reader.fail("layers", error.what());  // parseLayers quotes only a short piece
     }
   }
   const json& bodies = reader.array(reader.required(root, "", "bodies"), "bodies", 0);
