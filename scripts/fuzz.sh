@@ -6,6 +6,8 @@
 # Without --build-dir it builds build-fuzz/ with clang + ASan + UBSan first.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# ccache hits across clones in other folders (CI builds a fresh clone): paths relative to here.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 build=""
 if [ "${1:-}" = "--build-dir" ]; then build="$2"; shift 2; fi
 seconds="${1:-60}"

@@ -6,6 +6,8 @@
 # Leaks are reported except the third-party GL ones in tests/sanitizer/lsan.supp.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# ccache hits across clones in other folders (CI builds a fresh clone): paths relative to here.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 bash scripts/setup.sh
 CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPHYSDBG_SANITIZE=ON \
   -DPHYSDBG_FUZZ=ON -DPHYSDBG_WITH_PEERS=OFF >/dev/null
