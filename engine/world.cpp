@@ -1,6 +1,8 @@
 #include "engine/world.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "engine/broadphase/brute_force_broad_phase.h"
@@ -42,7 +44,6 @@ BodyId World::addBody(const BodyDefinition& definition) {
                                            body.isStatic() ? ProxyMotion::Static : ProxyMotion::Dynamic));
   frozen_.push_back(false);
   asleep_.push_back(false);
-  touching_.push_back(false);
   slowTime_.push_back(0.0);
   return id;
 }
@@ -72,8 +73,9 @@ void World::step() {
   } else {
     solveContacts();  // substeps: velocities, contacts, positions
   }
-  events_.update(contacts_, dormantPairs(), listener_);
-  updateSleep();
+  events_.update(eventContacts(), dormantPairs(), listener_);
+  if (keepHistory_) history_.add(stepTouchedPoints());
+  keepRestingContacts(updateSleep());
   freezeNonFiniteBodies();
   ++stepCount_;
 }
@@ -137,7 +139,6 @@ void World::findContacts() {
   contacts_.clear();
   std::swap(previousManifolds_, manifolds_);
   manifolds_.clear();
-  std::fill(touching_.begin(), touching_.end(), false);
   const bool speculative = settings_.solver.kind == SolverKind::SequentialImpulse;
   for (const BodyPair& pair : pairs_) {
     const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
@@ -159,7 +160,6 @@ void World::findContacts() {
     const double touchingGap = speculative ? settings_.solver.linearSlop : 0.0;
     if (result.status == ContactStatus::Separated && result.distance > touchingGap) continue;
     contacts_.push_back({pair.a, pair.b, result});
-    touching_[pair.a] = touching_[pair.b] = true;
   }
   stats_.manifolds = static_cast<int>(manifolds_.size());
   if (!settings_.skipStaticPairs) testStaticPairs();
@@ -277,6 +277,48 @@ std::vector<BodyPair> World::dormantPairs() const {
   return dormant;
 }
 
+namespace {
+
+// A speculative manifold the solver pushed on: the bodies were about to meet
+// and were stopped before they did. Reported at its hardest-pushed point.
+std::optional<Contact> speculativeImpact(const ContactManifold& manifold) {
+  const ManifoldPoint* strongest = nullptr;
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    const ManifoldPoint& point = manifold.points[p];
+    if (point.normalImpulse > 0.0 && (!strongest || point.normalImpulse > strongest->normalImpulse))
+      strongest = &point;
+  }
+  if (!strongest) return std::nullopt;
+  ContactResult result;
+  result.status = strongest->separation > 0.0 ? ContactStatus::Separated : ContactStatus::Touching;
+  result.distance = std::max(0.0, strongest->separation);
+  result.normal = manifold.normal;
+  result.pointA = strongest->pointA;
+  result.pointB = strongest->pointB;
+  return Contact{manifold.a, manifold.b, result};
+}
+
+}  // namespace
+
+// The touching pairs contact events report: the narrow phase's, and under
+// sequential impulses also each pair whose speculative points the solver
+// pushed on (an impact stopped just before the surfaces met is an impact).
+// Both lists are in pair order, and so is the result.
+const std::vector<Contact>& World::eventContacts() {
+  if (settings_.solver.kind != SolverKind::SequentialImpulse) return contacts_;
+  eventContacts_.clear();
+  std::size_t next = 0;
+  const auto pairOf = [this](std::size_t index) { return BodyPair{contacts_[index].a, contacts_[index].b}; };
+  for (const ContactManifold& manifold : manifolds_) {
+    const BodyPair pair{manifold.a, manifold.b};
+    while (next < contacts_.size() && pairOf(next) < pair) eventContacts_.push_back(contacts_[next++]);
+    if (next < contacts_.size() && pairOf(next) == pair) continue;
+    if (const std::optional<Contact> impact = speculativeImpact(manifold)) eventContacts_.push_back(*impact);
+  }
+  eventContacts_.insert(eventContacts_.end(), contacts_.begin() + static_cast<std::ptrdiff_t>(next), contacts_.end());
+  return eventContacts_;
+}
+
 void World::integratePositions() {
   for (BodyId id = 0; id < bodies_.size(); ++id) {
     if (isMoving(id)) bodies_[id].integratePosition(settings_.dt);
@@ -285,7 +327,7 @@ void World::integratePositions() {
 
 // A body sleeps when it and every awake body it touches have been slow for
 // timeToSleep, so a resting pile falls asleep together.
-void World::updateSleep() {
+bool World::updateSleep() {
   for (BodyId id = 0; id < bodies_.size(); ++id) {
     if (!isMoving(id)) continue;
     const RigidBody& body = bodies_[id];
@@ -293,7 +335,7 @@ void World::updateSleep() {
                       body.angularVelocity().norm() < settings_.sleepAngularSpeed;
     slowTime_[id] = slow ? slowTime_[id] + settings_.dt : 0.0;
   }
-  if (!settings_.allowSleep) return;
+  if (!settings_.allowSleep) return false;
   std::vector<bool> ready(bodies_.size(), false);
   for (BodyId id = 0; id < bodies_.size(); ++id) ready[id] = isMoving(id) && slowTime_[id] >= settings_.timeToSleep;
   for (const Contact& contact : contacts_) {
@@ -301,9 +343,13 @@ void World::updateSleep() {
       ready[contact.a] = ready[contact.b] = false;
     }
   }
+  bool fellAsleep = false;
   for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (ready[id]) putToSleep(id);
+    if (!ready[id]) continue;
+    putToSleep(id);
+    fellAsleep = true;
   }
+  return fellAsleep;
 }
 
 // A non-finite body is reported with the step it happened on, then frozen and

@@ -11,6 +11,7 @@
 #include "engine/broadphase/broad_phase.h"
 #include "engine/collision_response.h"
 #include "engine/contact_events.h"
+#include "engine/contact_history.h"
 #include "engine/contacts/contact_manifold.h"
 #include "engine/contacts/manifold_builder.h"
 #include "engine/dynamics/rigid_body.h"
@@ -109,6 +110,20 @@ class World {
   // The broad-phase tree, or null when the brute-force broad phase is used.
   const DynamicAabbTree* tree() const;
 
+  // Display only, nothing here changes a step. With the history kept, every
+  // step's touched points stay until clearContactHistory(), so a frame that
+  // spans several steps shows them all (the debugger keeps it, frame by frame).
+  void keepContactHistory(bool keep) {
+    keepHistory_ = keep;
+    history_.clear();
+  }
+  void clearContactHistory() { history_.clear(); }
+  // What the contacts and aabbs layers show, sorted by pair and feature:
+  // before the first step, the initial state's touching points (found here,
+  // nothing is stepped); after it, the history (without one, the last step's
+  // touched points), plus the points sleeping bodies rest on, marked resting.
+  std::vector<ShownContact> shownContacts() const;
+
   // Appends the primitives of the requested layers; computes nothing for the
   // layers that are not requested. With `counts`, adds how many primitives
   // each layer appended, so a caller can say which layer drew nothing.
@@ -129,7 +144,13 @@ class World {
   void warmStartFromPreviousStep();
   void integratePositions();
   std::vector<BodyPair> dormantPairs() const;
-  void updateSleep();
+  const std::vector<Contact>& eventContacts();
+  std::vector<ShownContact> stepTouchedPoints() const;
+  std::vector<ShownContact> initialContacts() const;
+  std::vector<BodyPair> overlappingBoxes(double margin) const;
+  void keepRestingContacts(bool fellAsleep);
+  bool atRest(const BodyPair& pair) const;
+  bool updateSleep();  // true when a body fell asleep
   void freezeNonFiniteBodies();
   void putToSleep(BodyId id);
   std::vector<std::shared_ptr<const debugdraw::TriangleMesh>> hullMeshes() const;
@@ -138,7 +159,7 @@ class World {
   WorldSettings settings_;
   std::vector<RigidBody> bodies_;
   std::vector<int> proxies_;  // broad-phase proxy per body, -1 once frozen
-  std::vector<bool> frozen_, asleep_, touching_;
+  std::vector<bool> frozen_, asleep_;
   std::vector<double> slowTime_;  // seconds spent below the sleep speeds
   std::unique_ptr<BroadPhase> broadPhase_;
   std::vector<BodyPair> pairs_;
@@ -148,6 +169,10 @@ class World {
   SequentialImpulseSolver solver_;
   std::vector<bool> movable_;
   ContactEventTracker events_;
+  std::vector<Contact> eventContacts_;  // this step's contacts plus speculative impacts
+  ContactHistory history_;
+  bool keepHistory_ = false;
+  std::vector<ShownContact> resting_;  // sorted; what sleeping bodies rest on
   ContactListener* listener_ = nullptr;
   std::vector<NumericalFault> faults_;
   StepStats stats_;

@@ -79,41 +79,45 @@ dd::Color shade(dd::Color color, float factor) {
   return {color.r * factor, color.g * factor, color.b * factor, color.a};
 }
 
-void emitContacts(const std::vector<Contact>& contacts, double scale, dd::Frame& frame) {
-  for (const Contact& contact : contacts) {
-    const ContactResult& result = contact.result;
-    const Vec3 point = 0.5 * (result.pointA + result.pointB);
-    frame.points.push_back({point, 7.0f, dd::colors::contactPoint});
-    const double length = scale * (0.25 + 4.0 * result.depth);
-    frame.arrows.push_back({point, point + result.normal * length, dd::colors::contactNormal});
+// Contacts of sleeping bodies: still there, but nothing happens at them.
+dd::Color dimmedIf(bool resting, dd::Color color) { return resting ? shade(color, 0.5f) : color; }
+
+// A dot for every point that touched since the last frame, and one normal
+// arrow per pair from the middle of its points, growing with the deepest one:
+// a manifold's points share the normal, and four parallel arrows per face
+// would only clutter the picture. Points sleeping bodies rest on are dimmed.
+void emitShownContacts(const std::vector<ShownContact>& points, double scale, dd::Frame& frame) {
+  for (std::size_t first = 0, last = 0; first < points.size(); first = last) {
+    Vec3 middle = Vec3::Zero();
+    double deepest = 0.0;
+    for (last = first; last < points.size() && points[last].pair == points[first].pair; ++last) {
+      const ShownContact& contact = points[last];
+      frame.points.push_back({contact.point, 7.0f, dimmedIf(contact.resting, dd::colors::contactPoint)});
+      middle += contact.point;
+      deepest = std::max(deepest, contact.depth);
+    }
+    middle /= static_cast<double>(last - first);
+    const double length = scale * (0.25 + 4.0 * deepest);
+    frame.arrows.push_back({middle, middle + points[first].normal * length,
+                            dimmedIf(points[first].resting, dd::colors::contactNormal)});
   }
 }
 
-// Under the sequential-impulse solver the contact is the manifold: a dot
-// for every point that holds the bodies (within the linear slop), and one
-// normal arrow per manifold from the middle of those points, growing with
-// the deepest one. The points share the normal; four parallel arrows per
-// face would only clutter the picture. Speculative points are left out.
-void emitManifoldPoints(const std::vector<ContactManifold>& manifolds, double touching, double scale,
-                        dd::Frame& frame) {
-  for (const ContactManifold& manifold : manifolds) {
-    Vec3 middle = Vec3::Zero();
-    double deepest = 0.0;
-    int count = 0;
-    for (int p = 0; p < manifold.pointCount; ++p) {
-      const ManifoldPoint& contact = manifold.points[p];
-      if (contact.separation > touching) continue;
-      const Vec3 point = 0.5 * (contact.pointA + contact.pointB);
-      frame.points.push_back({point, 7.0f, dd::colors::contactPoint});
-      middle += point;
-      deepest = std::max(deepest, -contact.separation);
-      ++count;
-    }
-    if (count == 0) continue;
-    middle /= count;
-    const double length = scale * (0.25 + 4.0 * deepest);
-    frame.arrows.push_back({middle, middle + manifold.normal * length, dd::colors::contactNormal});
+// Per body: 0 no contact since the last frame, 1 only contacts it rests on
+// asleep, 2 a contact while awake. The aabbs layer colours boxes by it.
+std::vector<int> contactStates(const std::vector<ShownContact>& points, std::size_t bodyCount) {
+  std::vector<int> states(bodyCount, 0);
+  for (const ShownContact& contact : points) {
+    const int state = contact.resting ? 1 : 2;
+    states[contact.pair.a] = std::max(states[contact.pair.a], state);
+    states[contact.pair.b] = std::max(states[contact.pair.b], state);
   }
+  return states;
+}
+
+dd::Color boxColor(int contactState) {
+  if (contactState == 0) return dd::colors::tightBox;
+  return dimmedIf(contactState == 1, dd::colors::colliding);
 }
 
 }  // namespace
@@ -129,6 +133,9 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
   std::vector<std::shared_ptr<const dd::TriangleMesh>> meshes;
   if (layers.has(dd::Layer::Shapes)) meshes = hullMeshes();
   double typicalSize = 0;
+  const bool showContacts = layers.has(dd::Layer::Contacts) || layers.has(dd::Layer::Aabbs);
+  const std::vector<ShownContact> shown = showContacts ? shownContacts() : std::vector<ShownContact>{};
+  const std::vector<int> contactState = contactStates(shown, bodies_.size());
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     const RigidBody& body = bodies_[i];
     if (!body.hasFiniteState()) continue;
@@ -145,8 +152,7 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
     if (layers.has(dd::Layer::Wire)) counted(dd::Layer::Wire, [&] { emitWire(body, frame); });
     if (layers.has(dd::Layer::Aabbs))
       counted(dd::Layer::Aabbs, [&] {
-        frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(),
-                                   touching_[i] ? dd::colors::colliding : dd::colors::tightBox});
+        frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), boxColor(contactState[i])});
       });
     if (layers.has(dd::Layer::Fat) && proxies_[i] >= 0)
       counted(dd::Layer::Fat, [&] {
@@ -170,11 +176,7 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
     });
   if (layers.has(dd::Layer::Contacts))
     counted(dd::Layer::Contacts, [&] {
-      const double scale = std::max(typicalSize, 0.2);
-      if (settings_.solver.kind == SolverKind::SequentialImpulse)
-        emitManifoldPoints(manifolds_, settings_.solver.linearSlop, scale, frame);
-      else
-        emitContacts(contacts_, scale, frame);
+      emitShownContacts(shown, std::max(typicalSize, 0.2), frame);
     });
   if (layers.has(dd::Layer::Pairs))
     counted(dd::Layer::Pairs, [&] {

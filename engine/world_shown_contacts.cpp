@@ -1,0 +1,88 @@
+// The contacts the debugger shows (engine/contact_history.h): the history of
+// touched points, the points sleeping bodies rest on, and frame 0's contacts
+// found without a step. Nothing here changes the simulation.
+#include <algorithm>
+
+#include "engine/narrowphase/narrow_phase.h"
+#include "engine/world.h"
+
+namespace physdbg {
+
+std::vector<ShownContact> World::shownContacts() const {
+  if (stepCount_ == 0) return mergeContacts(initialContacts(), resting_);
+  return mergeContacts(keepHistory_ ? history_.points() : stepTouchedPoints(), resting_);
+}
+
+std::vector<ShownContact> World::stepTouchedPoints() const {
+  if (settings_.solver.kind == SolverKind::SequentialImpulse) return touchedPoints(manifolds_, settings_.solver.linearSlop);
+  return touchedPoints(contacts_);
+}
+
+bool World::atRest(const BodyPair& pair) const {
+  if (frozen_[pair.a] || frozen_[pair.b] || isMoving(pair.a) || isMoving(pair.b)) return false;
+  return asleep_[pair.a] || asleep_[pair.b];
+}
+
+// Sleeping proxies make no pairs, so no step recomputes what a sleeping body
+// rests on: its points are taken from the step that put it to sleep and
+// dropped when a body of the pair wakes.
+void World::keepRestingContacts(bool fellAsleep) {
+  std::erase_if(resting_, [this](const ShownContact& point) { return !atRest(point.pair); });
+  if (!fellAsleep) return;
+  std::vector<ShownContact> fresh = stepTouchedPoints();
+  std::erase_if(fresh, [this](const ShownContact& point) { return !atRest(point.pair); });
+  for (ShownContact& point : fresh) point.resting = true;
+  resting_ = mergeContacts(std::move(fresh), resting_);
+}
+
+// Frame 0 comes before any step: the touching points of the initial state,
+// as the first step's narrow phase would find them (within the linear slop
+// under sequential impulses, static pairs skipped).
+std::vector<ShownContact> World::initialContacts() const {
+  const bool sequential = settings_.solver.kind == SolverKind::SequentialImpulse;
+  const double touching = sequential ? settings_.solver.linearSlop : 0.0;
+  std::vector<Contact> contacts;
+  std::vector<ContactManifold> manifolds;
+  ManifoldScratch scratch;
+  for (const BodyPair& pair : overlappingBoxes(touching)) {
+    const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
+    const ContactResult result =
+        collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase);
+    if (result.status == ContactStatus::Separated && result.distance > touching) continue;
+    contacts.push_back({pair.a, pair.b, result});
+    if (!sequential) continue;
+    ContactManifold& manifold = manifolds.emplace_back();
+    manifold.a = pair.a;
+    manifold.b = pair.b;
+    buildManifold(a.collider(), a.transform(), b.collider(), b.transform(), result, touching, scratch, manifold);
+  }
+  return sequential ? touchedPoints(manifolds, touching) : touchedPoints(contacts);
+}
+
+// Pairs of finite bodies, at least one not static, whose tight boxes grown by
+// `margin` overlap: sorted along x and swept, so a scene costs n log n plus
+// its neighbours rather than n^2 / 2 tests. Sorted by pair.
+std::vector<BodyPair> World::overlappingBoxes(double margin) const {
+  std::vector<Aabb> boxes(bodies_.size());
+  std::vector<BodyId> order;
+  for (BodyId id = 0; id < bodies_.size(); ++id) {
+    if (frozen_[id] || !bodies_[id].hasFiniteState()) continue;
+    boxes[id] = bodies_[id].collider().worldBounds(bodies_[id].transform()).enlarged(margin);
+    order.push_back(id);
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&boxes](BodyId left, BodyId right) { return boxes[left].min.x() < boxes[right].min.x(); });
+  std::vector<BodyPair> pairs;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const BodyId first = order[i];
+    for (std::size_t j = i + 1; j < order.size() && boxes[order[j]].min.x() <= boxes[first].max.x(); ++j) {
+      const BodyId second = order[j];
+      if (bodies_[first].isStatic() && bodies_[second].isStatic()) continue;
+      if (boxes[first].overlaps(boxes[second])) pairs.push_back({std::min(first, second), std::max(first, second)});
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+}  // namespace physdbg
