@@ -49,12 +49,18 @@ dd::View toView(const render::Camera& camera) {
 }
 
 SceneFrames::SceneFrames(const SceneDescription& scene, const ViewOptions& options)
-    : scene_(scene), options_(options), world_(buildWorld(scene)) {}
+    : scene_(scene), options_(options), world_(buildWorld(scene)) {
+  world_.keepContactHistory(true);
+}
 
+// Each frame shows the contacts of every step since the previous frame (a
+// bounce can begin and end between two frames), so the history starts over
+// with each frame's steps, drawn or not.
 void SceneFrames::advanceTo(int index) {
   if (index < current_) throw std::invalid_argument("SceneFrames: frames must be asked for in order");
   while (current_ < index) {
     const auto start = Clock::now();
+    world_.clearContactHistory();
     for (int step = 0; step < options_.stepsPerFrame; ++step) world_.step();
     const double seconds = secondsSince(start);
     simulateSeconds_ += seconds;

@@ -17,7 +17,7 @@ void addOverlay(const SceneDescription& scene, const World& world, const Overlay
   out.texts.push_back({6 * scale, 5 * scale, scale, line, {1, 1, 1, 1}});
   const StepStats& stats = world.lastStepStats();
   const int length = std::snprintf(line, sizeof line, "bodies %zu   pairs %d   contacts %d", world.bodyCount(),
-                                   stats.candidatePairs, stats.contacts);
+                                   stats.candidatePairs, contactPairCount(world.shownContacts()));
   if (counters.stepMs && length > 0 && static_cast<std::size_t>(length) < sizeof line)
     std::snprintf(line + length, sizeof line - length, "   step %.3f ms", *counters.stepMs);
   out.texts.push_back({6 * scale, 17 * scale, scale, line, {0.85f, 0.85f, 0.85f, 1}});

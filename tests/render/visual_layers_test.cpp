@@ -39,6 +39,13 @@ Match findColor(const physdbg::render::Image& image, dd::Color color, int tolera
   return match;
 }
 
+// A translucent layer colour as it shows over the renderer's background.
+dd::Color overBackground(dd::Color color) {
+  const float background[3] = {0.11f, 0.12f, 0.14f};
+  return {color.r * color.a + background[0] * (1 - color.a), color.g * color.a + background[1] * (1 - color.a),
+          color.b * color.a + background[2] * (1 - color.a), 1};
+}
+
 struct LayerCase {
   const char* scene;
   int steps;
@@ -92,7 +99,7 @@ TEST_P(LayerColors, AppearInsideTheLayersBoundsAndOnlyWhenOn) {
 INSTANTIATE_TEST_SUITE_P(
     Layers, LayerColors,
     ::testing::Values(LayerCase{"stack", 5, "aabbs", dd::colors::colliding},
-                      LayerCase{"stack", 5, "fat", dd::colors::fatBox},
+                      LayerCase{"stack", 5, "fat", overBackground(dd::colors::fatLayer)},
                       LayerCase{"stack", 5, "tree", dd::colors::treeNode},
                       LayerCase{"stack", 5, "contacts", dd::colors::contactPoint},
                       LayerCase{"bounce", 20, "velocities", {0.3f, 0.9f, 1.0f, 1}},
@@ -134,6 +141,61 @@ TEST(WireLayer, DrawsASphereAsACircleNotItsBoundingBox) {
     const double angle = 2 * M_PI * (step + 0.5) / 16;  // between the circle's own vertices
     EXPECT_GT(wireNear({std::cos(angle), std::sin(angle), 0}, 1), 0) << "circle at angle " << angle;
   }
+}
+
+}  // namespace
+
+// The contacts and aabbs layers show what the engine saw since the previous
+// frame: the initial contacts in frame 0, an impact that began and ended
+// between two frames, and the contacts a sleeping pile rests on (dimmed).
+// Frames come from the debugger's own frame source.
+#include "cli/scene_frames.h"
+
+namespace {
+
+constexpr int smallWidth = 160, smallHeight = 120;
+
+physdbg::render::Image renderSceneFrame(const physdbg::SceneDescription& scene, const char* layers, int index,
+                                        int stepsPerFrame = 1) {
+  physdbg::cli::ViewOptions options;
+  options.frames = {0, index + 1};
+  options.runFrames = index + 1;
+  options.stepsPerFrame = stepsPerFrame;
+  options.width = smallWidth;
+  options.height = smallHeight;
+  options.layers = dd::parseLayers(layers);
+  options.timing = false;
+  physdbg::cli::SceneFrames frames(scene, options);
+  const dd::RecordedFrame frame = frames.frame(index);
+  return physdbg::render::Renderer({smallWidth, smallHeight, 0}).render(frame.frame, physdbg::cli::toCamera(frame.view));
+}
+
+dd::Color dimmed(dd::Color color) { return {color.r * 0.5f, color.g * 0.5f, color.b * 0.5f, color.a}; }
+
+TEST(ContactsAsTheEngineSawThem, FrameZeroOfStackShowsRedBoxesAndContactDots) {
+  const physdbg::SceneDescription scene = physdbg::resolveScene("stack");
+  const physdbg::render::Image image = renderSceneFrame(scene, "aabbs,contacts", 0);
+  EXPECT_GE(findColor(image, dd::colors::colliding).count, 50);
+  EXPECT_GE(findColor(image, dd::colors::contactPoint).count, 10);
+}
+
+// A ball of restitution 1 hits the floor at about step 27 and is back in the
+// air by step 30: the frame of steps 1..30 ends with nothing touching.
+TEST(ContactsAsTheEngineSawThem, AFrameSpanningABounceShowsTheImpact) {
+  const physdbg::SceneDescription scene = physdbg::parseScene(
+      R"({"name": "one bounce", "bodies": [
+          {"shape": {"box": {"half_extents": [2, 0.25, 2]}}, "position": [0, -0.25, 0], "static": true},
+          {"shape": {"sphere": {"radius": 0.5}}, "position": [0, 1.5, 0], "restitution": 1}]})",
+      "one bounce");
+  const physdbg::render::Image image = renderSceneFrame(scene, "aabbs,contacts", 1, 30);
+  EXPECT_GE(findColor(image, dd::colors::colliding).count, 20);
+  EXPECT_GE(findColor(image, dd::colors::contactPoint).count, 5);
+}
+
+TEST(ContactsAsTheEngineSawThem, ASleepingStackStillShowsItsContactDotsDimmed) {
+  const physdbg::SceneDescription scene = physdbg::resolveScene("stack");
+  const physdbg::render::Image image = renderSceneFrame(scene, "contacts", 240);
+  EXPECT_GE(findColor(image, dimmed(dd::colors::contactPoint), 12).count, 10);
 }
 
 }  // namespace
