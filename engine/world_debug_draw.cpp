@@ -79,6 +79,10 @@ dd::Color shade(dd::Color color, float factor) {
   return {color.r * factor, color.g * factor, color.b * factor, color.a};
 }
 
+// The sleep layer's outline of a whole sleeping island: the darkened purple
+// of a sleeping body's box, so the pile reads as one.
+constexpr dd::Color sleepingIsland{0.4f, 0.25f, 0.6f, 1.0f};
+
 // Contacts of sleeping bodies: still there, but nothing happens at them.
 dd::Color dimmedIf(bool resting, dd::Color color) { return resting ? shade(color, 0.5f) : color; }
 
@@ -113,6 +117,38 @@ std::vector<int> contactStates(const std::vector<ShownContact>& points, std::siz
     states[contact.pair.b] = std::max(states[contact.pair.b], state);
   }
   return states;
+}
+
+// Sleeping bodies linked by the contacts they rest on fall asleep and wake
+// together: one island. Static bodies link nothing (a floor would join every
+// pile). Islands of two or more bodies, in order of their lowest body.
+std::vector<Aabb> sleepingIslandBoxes(const std::vector<RigidBody>& bodies, const std::vector<ShownContact>& resting) {
+  std::vector<std::size_t> root(bodies.size());
+  for (std::size_t i = 0; i < root.size(); ++i) root[i] = i;
+  const auto find = [&root](std::size_t i) {
+    while (root[i] != i) i = root[i] = root[root[i]];
+    return i;
+  };
+  for (const ShownContact& contact : resting) {
+    if (bodies[contact.pair.a].isStatic() || bodies[contact.pair.b].isStatic()) continue;
+    const std::size_t a = find(contact.pair.a), b = find(contact.pair.b);
+    root[std::max(a, b)] = std::min(a, b);
+  }
+  std::vector<int> size(bodies.size(), 0);
+  for (std::size_t i = 0; i < bodies.size(); ++i) ++size[find(i)];
+  std::vector<Aabb> boxes;
+  std::vector<int> slot(bodies.size(), -1);
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const std::size_t island = find(i);  // the island's lowest body, met first
+    if (size[island] < 2) continue;
+    const Aabb box = bodies[i].collider().worldBounds(bodies[i].transform());
+    if (slot[island] < 0) {
+      slot[island] = static_cast<int>(boxes.size());
+      boxes.push_back(box);
+    }
+    boxes[slot[island]] = boxes[slot[island]].merged(box);
+  }
+  return boxes;
 }
 
 dd::Color boxColor(int contactState) {
@@ -168,6 +204,12 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
         frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), {0.5f, 0.3f, 0.7f, 1}});
       });
   }
+  if (layers.has(dd::Layer::Sleep))
+    counted(dd::Layer::Sleep, [&] {
+      for (const Aabb& island : sleepingIslandBoxes(bodies_, resting_))
+        frame.wireBoxes.push_back({island.center(), Quat::Identity(), island.halfExtents() + Vec3::Constant(0.05),
+                                   sleepingIsland});
+    });
   if (layers.has(dd::Layer::Tree))
     counted(dd::Layer::Tree, [&] {
       TreeDrawOptions options;

@@ -81,3 +81,26 @@ TEST(ShownContacts, ASleepingStackStillShowsWhatItRestsOn) {
 
 }  // namespace
 }  // namespace physdbg
+
+namespace physdbg {
+namespace {
+
+// The sleep layer outlines a sleeping pile as one island around all its
+// boxes, besides marking each sleeping body (the floor links nothing).
+TEST(ShownContacts, TheSleepLayerOutlinesASleepingStackAsOneIsland) {
+  World world = buildWorld(resolveScene("stack"));
+  for (int step = 0; step < 600 && !world.isAsleep(10); ++step) world.step();
+  ASSERT_TRUE(world.isAsleep(10));
+  debugdraw::Frame frame;
+  world.emitDebugDraw(debugdraw::parseLayers("sleep"), frame);
+  ASSERT_EQ(frame.wireBoxes.size(), 11u);  // ten sleeping boxes, then the island
+  const debugdraw::WireBox& island = frame.wireBoxes.back();
+  for (BodyId id = 1; id <= 10; ++id) {
+    const Aabb box = world.body(id).collider().worldBounds(world.body(id).transform());
+    EXPECT_TRUE((box.min.array() >= (island.center - island.halfExtents).array()).all()) << id;
+    EXPECT_TRUE((box.max.array() <= (island.center + island.halfExtents).array()).all()) << id;
+  }
+}
+
+}  // namespace
+}  // namespace physdbg
