@@ -27,6 +27,9 @@ struct Color {
 namespace colors {
 inline constexpr Color treeNode{0.15f, 0.35f, 1.0f, 1.0f};     // tree AABBs: blue
 inline constexpr Color fatBox{0.1f, 0.85f, 0.2f, 1.0f};        // enlarged boxes: green
+// The `fat` layer's green, paler and translucent: a thousand overlapping fat
+// boxes at full strength merge into one green mass.
+inline constexpr Color fatLayer{0.55f, 0.95f, 0.6f, 0.4f};
 inline constexpr Color colliding{1.0f, 0.1f, 0.1f, 1.0f};      // collider box in contact: red
 inline constexpr Color tightBox{0.85f, 0.85f, 0.85f, 1.0f};    // collider box, no contact
 inline constexpr Color contactPoint{1.0f, 0.9f, 0.1f, 1.0f};   // contact points: yellow

@@ -193,7 +193,7 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
     if (layers.has(dd::Layer::Fat) && proxies_[i] >= 0)
       counted(dd::Layer::Fat, [&] {
         const Aabb& fat = broadPhase_->fatBox(proxies_[i]);
-        frame.wireBoxes.push_back({fat.center(), Quat::Identity(), fat.halfExtents(), dd::colors::fatBox});
+        frame.wireBoxes.push_back({fat.center(), Quat::Identity(), fat.halfExtents(), dd::colors::fatLayer});
       });
     if (layers.has(dd::Layer::Velocities) && !body.isStatic() && body.linearVelocity() != Vec3::Zero())
       counted(dd::Layer::Velocities, [&] {

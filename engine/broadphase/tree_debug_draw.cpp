@@ -1,34 +1,98 @@
 #include "engine/broadphase/tree_debug_draw.h"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
 
 namespace physdbg {
 namespace {
 
-debugdraw::WireBox wireBox(const Aabb& box, debugdraw::Color color) {
-  return {box.center(), Quat::Identity(), box.halfExtents(), color};
+namespace dd = debugdraw;
+
+// Deep nodes tend to the palest tree colour; fades no further than this alpha.
+constexpr dd::Color kPalestNode{0.8f, 0.88f, 1.0f, 1.0f};
+constexpr float kDeepestAlpha = 0.7f;
+constexpr float kStepPerDepth = 0.78f;  // share of the remaining change left after each level
+constexpr int kMaxLegendDepths = 14;
+
+dd::WireBox wireBox(const Aabb& box, dd::Color color) { return {box.center(), Quat::Identity(), box.halfExtents(), color}; }
+
+bool sameBox(const Aabb& a, const Aabb& b) { return a.min == b.min && a.max == b.max; }
+
+// Per depth: how many internal nodes were drawn and how many of them have
+// exactly their parent's box (a chain that draws one box several times).
+struct DepthCount {
+  int nodes = 0, sameAsParent = 0;
+};
+
+std::string legendLine(int depth, const DepthCount& count) {
+  std::string line = std::to_string(depth) + "  " + std::to_string(count.nodes) + (count.nodes == 1 ? " box" : " boxes");
+  if (count.sameAsParent == count.nodes) return line + ", parent's box again";
+  if (count.sameAsParent > 0) return line + ", " + std::to_string(count.sameAsParent) + " parent's box again";
+  return line;
+}
+
+// Top left, under the two overlay lines (28 px at scale 1, 56 at scale 2).
+void drawLegend(const std::map<int, DepthCount>& counts, dd::Frame& frame) {
+  if (counts.empty()) return;
+  constexpr float left = 6, top = 64, lineHeight = 11, scale = 1;
+  frame.texts.push_back({left, top, scale, "tree depth", {1, 1, 1, 1}});
+  float y = top + lineHeight;
+  int shown = 0;
+  for (const auto& [depth, count] : counts) {
+    if (++shown > kMaxLegendDepths) {
+      frame.texts.push_back({left, y, scale, "... to " + std::to_string(counts.rbegin()->first), {1, 1, 1, 1}});
+      break;
+    }
+    dd::Color color = treeNodeColor(depth);
+    color.a = 1;  // text must read on its own
+    frame.texts.push_back({left, y, scale, legendLine(depth, count), color});
+    y += lineHeight;
+  }
 }
 
 }  // namespace
 
-void drawTree(const DynamicAabbTree& tree, const TreeDrawOptions& options, debugdraw::Frame& frame) {
-  const int height = std::max(1, tree.height());
-  tree.forEachNode([&](const Aabb& box, int depth, bool isLeaf) {
-    if (depth < options.minDepth || depth > options.maxDepth) return;
-    if (isLeaf) {
-      if (options.leaves) frame.wireBoxes.push_back(wireBox(box, debugdraw::colors::fatBox));
-      return;
-    }
-    if (!options.internalNodes) return;
-    debugdraw::Color color = debugdraw::colors::treeNode;
-    // The root is opaque, the deepest level faint: nesting stays readable.
-    color.a = 1.0f - 0.75f * static_cast<float>(depth) / static_cast<float>(height);
-    frame.wireBoxes.push_back(wireBox(box, color));
-  });
+dd::Color treeNodeColor(int depth) {
+  const float change = 1.0f - std::pow(kStepPerDepth, static_cast<float>(std::max(depth, 0)));
+  const dd::Color root = dd::colors::treeNode;
+  return {root.r + (kPalestNode.r - root.r) * change, root.g + (kPalestNode.g - root.g) * change,
+          root.b + (kPalestNode.b - root.b) * change, 1.0f - (1.0f - kDeepestAlpha) * change};
 }
 
-void drawRotations(const std::vector<RotationEvent>& events, debugdraw::Frame& frame) {
-  const debugdraw::Color color{1.0f, 0.3f, 1.0f, 1.0f};  // magenta: not used by any other layer
+void drawTree(const DynamicAabbTree& tree, const TreeDrawOptions& options, dd::Frame& frame) {
+  if (tree.root() == DynamicAabbTree::nullNode) return;
+  std::map<int, DepthCount> counts;
+  // Depth first, first child first: the order forEachNode gives, kept for recordings.
+  struct Visit {
+    int node, depth, parent;
+  };
+  std::vector<Visit> stack{{tree.root(), 0, DynamicAabbTree::nullNode}};
+  while (!stack.empty()) {
+    const auto [node, depth, parent] = stack.back();
+    stack.pop_back();
+    const bool leaf = tree.isLeaf(node);
+    if (!leaf) {
+      stack.push_back({tree.child2(node), depth + 1, node});
+      stack.push_back({tree.child1(node), depth + 1, node});
+    }
+    if (depth < options.minDepth || depth > options.maxDepth) continue;
+    if (leaf) {
+      if (options.leaves) frame.wireBoxes.push_back(wireBox(tree.box(node), dd::colors::fatBox));
+      continue;
+    }
+    if (!options.internalNodes) continue;
+    frame.wireBoxes.push_back(wireBox(tree.box(node), treeNodeColor(depth)));
+    DepthCount& count = counts[depth];
+    ++count.nodes;
+    if (parent != DynamicAabbTree::nullNode && sameBox(tree.box(node), tree.box(parent))) ++count.sameAsParent;
+  }
+  if (options.legend) drawLegend(counts, frame);
+}
+
+void drawRotations(const std::vector<RotationEvent>& events, dd::Frame& frame) {
+  const dd::Color color{1.0f, 0.3f, 1.0f, 1.0f};  // magenta: not used by any other layer
   for (const RotationEvent& event : events) {
     frame.wireBoxes.push_back(wireBox(event.firstBox, color));
     frame.wireBoxes.push_back(wireBox(event.secondBox, color));
