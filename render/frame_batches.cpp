@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -18,6 +19,10 @@ using Eigen::Vector3d;
 // Arrow heads are a fixed fraction of the arrow so they scale with the scene.
 constexpr double kHeadLengthFraction = 0.2;
 constexpr double kHeadRadiusFraction = 0.4;  // of the head length
+constexpr double kMaximumHeadFraction = 0.5;
+// An arrow seen almost end-on would need to grow without bound to span the
+// minimum on screen; it grows this much at most and stays a dot.
+constexpr double kMaximumArrowGrowth = 1000;
 
 void requireFinite(const Vector3d& value, const char* what) {
   if (!value.allFinite()) throw std::invalid_argument(std::string("debug draw: ") + what + " is not finite");
@@ -108,30 +113,88 @@ void addLine(const Vector3d& from, const Vector3d& to, const Color& color, const
   batches.lines.push_back(coloredVertex(to - origin, color));
 }
 
-void addArrow(const debugdraw::Arrow& arrow, const Vector3d& origin, FrameBatches& batches) {
+// Pixel distance between two points relative to the origin; none when
+// either lies behind the eye.
+std::optional<double> screenLength(const ScreenMapping& screen, const Vector3d& from, const Vector3d& to) {
+  const Eigen::Vector4d a = screen.viewProjection * from.homogeneous();
+  const Eigen::Vector4d b = screen.viewProjection * to.homogeneous();
+  if (!(a.w() > 0) || !(b.w() > 0)) return std::nullopt;
+  const Eigen::Vector2d pixels(0.5 * screen.width, 0.5 * screen.height);
+  const Eigen::Vector2d offset = (b.head<2>() / b.w() - a.head<2>() / a.w()).cwiseProduct(pixels);
+  return offset.norm();
+}
+
+// The world length that spans the minimum on screen, never shorter than
+// `length`. Perspective makes pixels per metre vary along the arrow, so the
+// length is measured again after each growth.
+double readableLength(const ScreenMapping* screen, const Vector3d& from, const Vector3d& direction,
+                      double length) {
+  if (!screen) return length;
+  const double limit = length * kMaximumArrowGrowth;
+  for (int pass = 0; pass < 4; ++pass) {
+    const std::optional<double> pixels = screenLength(*screen, from, from + direction * length);
+    if (!pixels || *pixels >= kMinimumArrowPixels - 1e-9) break;
+    const double grown = std::min(limit, length * kMinimumArrowPixels / std::max(*pixels, 1e-9));
+    if (!screenLength(*screen, from, from + direction * grown)) break;  // would reach behind the eye
+    length = grown;
+  }
+  return length;
+}
+
+// A fifth of the arrow, but at least a few pixels so the direction reads.
+double headLengthOf(const ScreenMapping* screen, const Vector3d& from, const Vector3d& direction, double length) {
+  const double head = kHeadLengthFraction * length;
+  if (!screen) return head;
+  const std::optional<double> pixels = screenLength(*screen, from, from + direction * length);
+  if (!pixels || *pixels <= 0) return head;
+  return std::min(std::max(head, length * kMinimumArrowHeadPixels / *pixels), kMaximumHeadFraction * length);
+}
+
+// Four tenths of the head's length as seen: an arrow grown while seen end-on
+// has a long head in the world, and its cone must not open into a disc that
+// hides everything around it.
+double headRadiusOf(const ScreenMapping* screen, const Vector3d& headBase, const Vector3d& direction,
+                    double headLength) {
+  const double radius = kHeadRadiusFraction * headLength;
+  if (!screen) return radius;
+  const std::optional<double> headPixels = screenLength(*screen, headBase, headBase + direction * headLength);
+  const Vector3d across = direction.unitOrthogonal(), other = direction.cross(across);
+  const std::optional<double> acrossPixels = screenLength(*screen, headBase, headBase + across * radius);
+  const std::optional<double> otherPixels = screenLength(*screen, headBase, headBase + other * radius);
+  if (!headPixels || !acrossPixels || !otherPixels) return radius;
+  const double radiusPixels = std::max(*acrossPixels, *otherPixels);  // the cone's base as seen
+  const double wantedPixels = kHeadRadiusFraction * std::max(*headPixels, kMinimumArrowHeadPixels);
+  return radiusPixels > wantedPixels ? radius * wantedPixels / radiusPixels : radius;
+}
+
+void addArrow(const debugdraw::Arrow& arrow, const Vector3d& origin, const ScreenMapping* screen,
+              FrameBatches& batches) {
   requireFinite(arrow.from, "arrow start");
   requireFinite(arrow.to, "arrow end");
   const Vector3d shaft = arrow.to - arrow.from;
-  const double length = shaft.norm();
-  if (length <= 0) return;  // nothing to point with
-  const Vector3d direction = shaft / length;
-  const double headLength = kHeadLengthFraction * length;
-  const Vector3d headBase = arrow.to - direction * headLength;
-  addLine(arrow.from, headBase, arrow.color, origin, batches);
+  if (!(shaft.norm() > 0)) return;  // nothing to point with
+  const Vector3d direction = shaft.normalized();
+  const Vector3d from = arrow.from - origin;
+  const double length = readableLength(screen, from, direction, shaft.norm());
+  const double headLength = headLengthOf(screen, from, direction, length);
+  const Vector3d headBase = from + direction * (length - headLength);
+  batches.arrowShafts.push_back(coloredVertex(from, arrow.color));
+  batches.arrowShafts.push_back(coloredVertex(headBase, arrow.color));
   const Quaterniond rotation = Quaterniond::FromTwoVectors(Vector3d::UnitY(), direction);
-  const double headRadius = kHeadRadiusFraction * headLength;
-  batches.arrowHeads.push_back(makeInstance(headBase - origin, rotation,
-                                            Vector3d(headRadius, headLength, headRadius), 0, arrow.color));
+  const double headRadius = headRadiusOf(screen, headBase, direction, headLength);
+  batches.arrowHeads.push_back(
+      makeInstance(headBase, rotation, Vector3d(headRadius, headLength, headRadius), 0, arrow.color));
 }
 
-void addOverlays(const debugdraw::Frame& frame, const Vector3d& origin, FrameBatches& batches) {
+void addOverlays(const debugdraw::Frame& frame, const Vector3d& origin, const ScreenMapping* screen,
+                 FrameBatches& batches) {
   for (const auto& box : frame.wireBoxes) batches.wireBoxes.push_back(boxInstance(box, origin, "wire box"));
   for (const auto& line : frame.lines) {
     requireFinite(line.from, "line start");
     requireFinite(line.to, "line end");
     addLine(line.from, line.to, line.color, origin, batches);
   }
-  for (const auto& arrow : frame.arrows) addArrow(arrow, origin, batches);
+  for (const auto& arrow : frame.arrows) addArrow(arrow, origin, screen, batches);
   for (const auto& point : frame.points) {
     requireFinite(point.position, "point");
     requireNonNegative(point.sizePixels, "point size");
@@ -147,12 +210,12 @@ void addOverlays(const debugdraw::Frame& frame, const Vector3d& origin, FrameBat
 
 }  // namespace
 
-FrameBatches buildFrameBatches(const debugdraw::Frame& frame, const Vector3d& origin) {
+FrameBatches buildFrameBatches(const debugdraw::Frame& frame, const Vector3d& origin, const ScreenMapping* screen) {
   requireFinite(origin, "camera origin");
   FrameBatches batches;
   addSolids(frame, origin, batches);
   addMeshes(frame, origin, batches);
-  addOverlays(frame, origin, batches);
+  addOverlays(frame, origin, screen, batches);
   return batches;
 }
 

@@ -43,16 +43,31 @@ struct MeshBatch {
   std::vector<Instance> instances;
 };
 
+// Arrows and points are markers: the renderer draws them over the solids
+// with a dark outline, so they are kept apart from the plain lines.
 struct FrameBatches {
   std::vector<Instance> boxes, spheres, capsules, arrowHeads, wireBoxes;
   std::vector<MeshBatch> meshes;
-  std::vector<ColoredVertex> lines;  // pairs: lines, then arrow shafts
+  std::vector<ColoredVertex> lines;        // pairs
+  std::vector<ColoredVertex> arrowShafts;  // pairs
   std::vector<PointVertex> points;
-  std::vector<TextVertex> texts;     // triangles: outlines first, then glyphs
+  std::vector<TextVertex> texts;  // triangles: outlines first, then glyphs
 };
+
+// Where positions relative to the origin land in the image. Given one,
+// buildFrameBatches lengthens arrows shorter than kMinimumArrowPixels on
+// screen (keeping start and direction): a resting contact normal or a slow
+// body's velocity would otherwise be a few pixels, unreadable.
+struct ScreenMapping {
+  Eigen::Matrix4d viewProjection;  // of positions relative to the origin
+  double width = 0, height = 0;    // pixels
+};
+inline constexpr double kMinimumArrowPixels = 12;
+inline constexpr double kMinimumArrowHeadPixels = 5;
 
 // Throws std::invalid_argument for non-finite positions, negative sizes, a
 // zero quaternion, a solid mesh without mesh, or a non-positive text scale.
-FrameBatches buildFrameBatches(const debugdraw::Frame& frame, const Eigen::Vector3d& origin);
+FrameBatches buildFrameBatches(const debugdraw::Frame& frame, const Eigen::Vector3d& origin,
+                               const ScreenMapping* screen = nullptr);
 
 }  // namespace physdbg::render

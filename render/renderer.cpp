@@ -23,6 +23,9 @@ constexpr int kMaxDimension = 16384;
 constexpr int kMaxSamples = 16;
 constexpr float kBackground[4] = {0.11f, 0.12f, 0.14f, 1.0f};
 constexpr int kConeSegments = 16;
+// A pixel left, right, up and down: a one-pixel outline round lines and cones.
+constexpr float kOutlineShifts[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+constexpr int kOutlineCopies = 4;
 
 void validate(const RendererOptions& options) {
   if (options.width <= 0 || options.height <= 0 || options.width > kMaxDimension || options.height > kMaxDimension)
@@ -98,13 +101,16 @@ class Renderer::Impl {
 
   Image render(const debugdraw::Frame& frame, const Camera& camera) {
     validateCamera(camera);
-    const FrameBatches batches = buildFrameBatches(frame, camera.target);
+    const Eigen::Matrix4f viewProjection = viewProjectionMatrix(frame, camera);
+    const ScreenMapping screen{viewProjection.cast<double>(), static_cast<double>(options_.width),
+                               static_cast<double>(options_.height)};
+    const FrameBatches batches = buildFrameBatches(frame, camera.target, &screen);
     context_->makeCurrent();
     target_.bindForDrawing();
     setUpState();
-    const Eigen::Matrix4f viewProjection = viewProjectionMatrix(frame, camera);
     drawSolids(batches, camera, viewProjection);
     drawOverlays(batches, viewProjection);
+    drawMarkers(batches, viewProjection);
     drawText(batches);
     meshCache_.endFrame();
     checkGlError("rendering a frame");
@@ -142,9 +148,18 @@ class Renderer::Impl {
         .cast<float>();
   }
 
-  static void useProgram(const GlProgram& program, const Eigen::Matrix4f& viewProjection) {
+  // Also clears the marker outline uniforms, which the programs share with markers.
+  void useProgram(const GlProgram& program, const Eigen::Matrix4f& viewProjection) {
     glUseProgram(program.get());
     glUniformMatrix4fv(glGetUniformLocation(program.get(), "uViewProjection"), 1, GL_FALSE, viewProjection.data());
+    setOutline(program, 0, 0, false);
+  }
+
+  // Shifts the program's geometry by (x, y) pixels, in the outline colour or not.
+  void setOutline(const GlProgram& program, float x, float y, bool outline) const {
+    glUniform2f(glGetUniformLocation(program.get(), "uShift"), 2.0f * x / static_cast<float>(options_.width),
+                2.0f * y / static_cast<float>(options_.height));
+    glUniform1f(glGetUniformLocation(program.get(), "uOutline"), outline ? 1.0f : 0.0f);
   }
 
   static std::vector<InstancedMesh> uploadSphereLevels() {
@@ -173,7 +188,6 @@ class Renderer::Impl {
     drawRound(batches.spheres, camera);
     drawRound(batches.capsules, camera);
     for (const MeshBatch& batch : batches.meshes) drawInstances(meshCache_.get(*batch.mesh), batch.instances);
-    drawInstances(cone_, batches.arrowHeads);
     glDisable(GL_CULL_FACE);
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
@@ -183,8 +197,49 @@ class Renderer::Impl {
     drawInstances(cubeEdges_, batches.wireBoxes);
     useProgram(line_, viewProjection);
     lines_.draw(batches.lines, GL_LINES);
+  }
+
+  // Contact points, contact normals and velocities are what a debug picture is
+  // for, and they start inside or on the bodies: they are drawn over
+  // everything (no depth test; depth clamping keeps the ones past the near or
+  // far plane), each with a one-pixel dark outline so they read on any body
+  // colour. Points first, so the arrows leaving them stay whole.
+  void drawMarkers(const FrameBatches& batches, const Eigen::Matrix4f& viewProjection) {
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_DEPTH_CLAMP);
+    drawPoints(batches, viewProjection);
+    drawArrows(batches, viewProjection);
+    glDisable(GL_DEPTH_CLAMP);
+    glEnable(GL_DEPTH_TEST);
+  }
+
+  void drawPoints(const FrameBatches& batches, const Eigen::Matrix4f& viewProjection) {
     useProgram(point_, viewProjection);
+    const GLint grow = glGetUniformLocation(point_.get(), "uGrowPixels");
+    glUniform1f(grow, 2.0f);  // a one-pixel ring
+    setOutline(point_, 0, 0, true);
     points_.draw(batches.points, GL_POINTS);
+    glUniform1f(grow, 0.0f);
+    setOutline(point_, 0, 0, false);
+    points_.draw(batches.points, GL_POINTS);
+  }
+
+  // Shifted dark copies, then the arrows; heads are lit cones, culled
+  // to their front faces so a cone never draws over itself.
+  void drawArrows(const FrameBatches& batches, const Eigen::Matrix4f& viewProjection) {
+    if (batches.arrowShafts.empty()) return;
+    glEnable(GL_CULL_FACE);
+    for (int shift = 0; shift <= kOutlineCopies; ++shift) {
+      const bool outline = shift < kOutlineCopies;
+      const float x = outline ? kOutlineShifts[shift][0] : 0.0f, y = outline ? kOutlineShifts[shift][1] : 0.0f;
+      useProgram(line_, viewProjection);
+      setOutline(line_, x, y, outline);
+      lines_.draw(batches.arrowShafts, GL_LINES);
+      useProgram(solid_, viewProjection);
+      setOutline(solid_, x, y, outline);
+      drawInstances(cone_, batches.arrowHeads);
+    }
+    glDisable(GL_CULL_FACE);
   }
 
   void drawText(const FrameBatches& batches) {

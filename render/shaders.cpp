@@ -12,19 +12,32 @@ namespace physdbg::render::shaders {
   "  return v + q.w * t + cross(q.xyz, t);\n"    \
   "}\n"
 
+// Markers (arrows, points) are drawn first in a dark outline colour shifted
+// by a pixel in each direction, then in their own colour. Both uniforms are
+// zero for every other draw.
+#define PHYSDBG_OUTLINE_INPUTS                                          \
+  "uniform vec2 uShift;\n"   /* clip-space offset of one outline copy */ \
+  "uniform float uOutline;\n" /* 1: draw in the outline colour */        \
+  "vec4 outlined(vec4 color) {\n"                                      \
+  "  return mix(color, vec4(0.04, 0.04, 0.05, color.a), uOutline);\n"  \
+  "}\n"                                                                \
+  "vec4 shifted(vec4 position) {\n"                                    \
+  "  return vec4(position.xy + uShift * position.w, position.zw);\n"   \
+  "}\n"
+
 const char* const kSolidVertex =
     "#version 330 core\n"
     "layout(location = 0) in vec4 aPosition;\n"
     "layout(location = 1) in vec3 aNormal;\n" PHYSDBG_INSTANCE_INPUTS
-    "uniform mat4 uViewProjection;\n"
+    "uniform mat4 uViewProjection;\n" PHYSDBG_OUTLINE_INPUTS
     "out vec3 vNormal;\n"
     "out vec4 vColor;\n"
     "void main() {\n"
     "  vec3 local = aPosition.xyz * iScale.xyz + vec3(0.0, aPosition.w * iScale.w, 0.0);\n"
     // Inverse-transpose of a scale is its reciprocal; the floor keeps flat boxes finite.
     "  vNormal = rotate(iRotation, aNormal / max(iScale.xyz, vec3(1e-30)));\n"
-    "  vColor = iColor;\n"
-    "  gl_Position = uViewProjection * vec4(rotate(iRotation, local) + iTranslation, 1.0);\n"
+    "  vColor = outlined(iColor);\n"
+    "  gl_Position = shifted(uViewProjection * vec4(rotate(iRotation, local) + iTranslation, 1.0));\n"
     "}\n";
 
 const char* const kSolidFragment =
@@ -52,11 +65,11 @@ const char* const kLineVertex =
     "#version 330 core\n"
     "layout(location = 0) in vec3 aPosition;\n"
     "layout(location = 1) in vec4 aColor;\n"
-    "uniform mat4 uViewProjection;\n"
+    "uniform mat4 uViewProjection;\n" PHYSDBG_OUTLINE_INPUTS
     "out vec4 vColor;\n"
     "void main() {\n"
-    "  vColor = aColor;\n"
-    "  gl_Position = uViewProjection * vec4(aPosition, 1.0);\n"
+    "  vColor = outlined(aColor);\n"
+    "  gl_Position = shifted(uViewProjection * vec4(aPosition, 1.0));\n"
     "}\n";
 
 const char* const kUnlitFragment =
@@ -70,11 +83,12 @@ const char* const kPointVertex =
     "layout(location = 0) in vec3 aPosition;\n"
     "layout(location = 1) in float aSize;\n"
     "layout(location = 2) in vec4 aColor;\n"
-    "uniform mat4 uViewProjection;\n"
+    "uniform mat4 uViewProjection;\n" PHYSDBG_OUTLINE_INPUTS
+    "uniform float uGrowPixels;\n"
     "out vec4 vColor;\n"
     "void main() {\n"
-    "  vColor = aColor;\n"
-    "  gl_PointSize = aSize;\n"
+    "  vColor = outlined(aColor);\n"
+    "  gl_PointSize = aSize + uGrowPixels;\n"
     "  gl_Position = uViewProjection * vec4(aPosition, 1.0);\n"
     // Pull towards the camera so a point on a slanted surface is not half buried.
     "  gl_Position.z -= 0.002 * gl_Position.w;\n"
@@ -102,5 +116,6 @@ const char* const kTextVertex =
     "}\n";
 
 #undef PHYSDBG_INSTANCE_INPUTS
+#undef PHYSDBG_OUTLINE_INPUTS
 
 }  // namespace physdbg::render::shaders

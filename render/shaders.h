@@ -3,6 +3,7 @@
 namespace physdbg::render::shaders {
 
 // Instanced solids: rotation quaternion, scale, capsule stretch; Lambert + ambient.
+// Solids, lines and points take uShift/uOutline to draw a marker's dark outline.
 extern const char* const kSolidVertex;
 extern const char* const kSolidFragment;
 // Instanced wire boxes: the same instance layout, no lighting.
