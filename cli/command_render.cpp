@@ -2,6 +2,7 @@
 // --video, encodes them with ffmpeg.
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -58,10 +59,13 @@ void encodeVideo(const std::string& ffmpeg, const std::string& directory, const 
 }
 
 // Finds ffmpeg on PATH and checks the video path before any frame is drawn.
+// Like -o, --video creates its folder (out/ on a fresh checkout).
 std::string prepareVideo(const std::string& video) {
   const std::optional<std::string> ffmpeg = findExecutable("ffmpeg");
   if (!ffmpeg)
     throw UsageError("--video: ffmpeg is not installed (apt-get install ffmpeg); the PNG frames need no ffmpeg");
+  const std::filesystem::path folder = std::filesystem::path(video).parent_path();
+  if (!folder.empty()) prepareOutputDirectory(folder.string(), "--video");
   checkOutputFile(video, "--video");
   return *ffmpeg;
 }

@@ -35,7 +35,7 @@ TEST(OutputFailures, ExitTwoNamingTheOptionAndThePath) {
         Case{"record default --frames 2 -o /dev/full", "-o", "/dev/full"},
         Case{"record default --frames 2 -o " + directory, "-o", directory},
         Case{"render default --frames 1 --size 64x48 -o " + file, "-o", file},
-        Case{render + " --video " + (folder / "no/v.mp4"), "--video", folder / "no/v.mp4"},
+        Case{render + " --video " + file + "/v.mp4", "--video", file},  // its folder would be a file
         Case{render + " --video " + directory, "--video", directory}, Case{"tree default -o " + file, "-o", file},
         Case{"report stages -o " + file, "-o", file}}) {
     const Result result =

@@ -50,6 +50,20 @@ TEST(VideoWithoutShell, FfmpegReceivesTheLiteralPathsAndNothingRuns) {
   EXPECT_EQ(arguments.back(), "file:" + hostileVideo);
 }
 
+// As on a fresh checkout with no out/ yet (scripts/demo.sh): --video creates its folder, like -o.
+TEST(VideoWithoutShell, TheVideoFolderIsCreated) {
+  ScratchFolder folder;
+  writeHostileScene(folder / "evil.json");
+  const std::string log = folder / "ffmpeg-arguments.txt";
+  const PathPrefix path(fakeFfmpegFolder(folder, log));
+  const auto exit = physdbgIn(folder / "", {"render", "evil.json", "--size", "64x48", "--video", "out/sub/v.mp4"});
+  ASSERT_TRUE(exit.succeeded()) << exit.describe();
+  EXPECT_TRUE(fs::is_directory(folder / "out/sub"));
+  const std::vector<std::string> arguments = readLines(log);
+  ASSERT_FALSE(arguments.empty());
+  EXPECT_EQ(arguments.back(), "file:out/sub/v.mp4");
+}
+
 // The scene's name reaches ffmpeg only through the default output folder, made safe.
 TEST(VideoWithoutShell, TheSceneNameInTheDefaultFolderRunsNothing) {
   ScratchFolder folder;
