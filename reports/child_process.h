@@ -49,6 +49,7 @@ class ChildProcess {
   ChildProcess& operator=(const ChildProcess&) = delete;
 
   ChildExit wait();
+  pid_t id() const { return pid_; }
 
  private:
   pid_t pid_ = -1;

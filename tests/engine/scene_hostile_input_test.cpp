@@ -3,8 +3,6 @@
 // allocated, and never with anything but SceneError.
 #include <gtest/gtest.h>
 
-#include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <random>
