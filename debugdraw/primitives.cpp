@@ -1,5 +1,6 @@
 #include "debugdraw/primitives.h"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -20,7 +21,7 @@ const std::vector<std::pair<std::string, Layer>>& allLayers() {
       {"shapes", Layer::Shapes}, {"wire", Layer::Wire},         {"aabbs", Layer::Aabbs},
       {"fat", Layer::Fat},       {"tree", Layer::Tree},         {"contacts", Layer::Contacts},
       {"velocities", Layer::Velocities}, {"sleep", Layer::Sleep}, {"pairs", Layer::Pairs},
-      {"overlay", Layer::Overlay}};
+      {"overlay", Layer::Overlay}, {"impulses", Layer::Impulses}, {"grid", Layer::Grid}};
   return layers;
 }
 
@@ -67,7 +68,50 @@ bool Frame::empty() const { return primitiveCount() == 0; }
 
 std::size_t Frame::primitiveCount() const {
   return boxes.size() + spheres.size() + capsules.size() + meshes.size() + wireBoxes.size() + lines.size() +
-         points.size() + arrows.size() + texts.size();
+         points.size() + arrows.size() + texts.size() + labels.size();
+}
+
+namespace {
+
+// Calls visit(list) on each primitive list in a fixed order.
+template <typename FrameType, typename Visit>
+void forEachList(FrameType& frame, Visit visit) {
+  visit(frame.boxes);
+  visit(frame.spheres);
+  visit(frame.capsules);
+  visit(frame.meshes);
+  visit(frame.wireBoxes);
+  visit(frame.lines);
+  visit(frame.points);
+  visit(frame.arrows);
+  visit(frame.texts);
+  visit(frame.labels);
+}
+
+void fill(Tag& target, const Tag& tag) {
+  if (target.layer == 0) target.layer = tag.layer;
+  if (target.body < 0) target.body = tag.body;
+  if (target.otherBody < 0) target.otherBody = tag.otherBody;
+  if (target.node < 0) target.node = tag.node;
+  if (target.parent < 0) target.parent = tag.parent;
+  if (target.depth < 0) target.depth = tag.depth;
+}
+
+}  // namespace
+
+FrameMark markOf(const Frame& frame) {
+  FrameMark mark;
+  std::size_t list = 0;
+  forEachList(frame, [&](const auto& items) { mark.sizes[list++] = items.size(); });
+  return mark;
+}
+
+void fillTagsSince(Frame& frame, const FrameMark& mark, const Tag& tag) {
+  std::size_t list = 0;
+  forEachList(frame, [&](auto& items) {
+    for (std::size_t i = std::min(mark.sizes[list], items.size()); i < items.size(); ++i) fill(items[i].tag, tag);
+    ++list;
+  });
 }
 
 }  // namespace physdbg::debugdraw

@@ -50,6 +50,8 @@ enum class Layer : std::uint32_t {
   Sleep = 1u << 7,
   Pairs = 1u << 8,
   Overlay = 1u << 9,
+  Impulses = 1u << 10,
+  Grid = 1u << 11,
 };
 
 struct LayerSet {
@@ -77,11 +79,33 @@ LayerSet parseLayers(const std::string& list);
 std::string layerNames(LayerSet set);
 const std::vector<std::pair<std::string, Layer>>& allLayers();
 
+// Who drew a primitive and for which body, so a viewer (replay, --highlight,
+// --tree-depth) can choose layers and bodies after the run, with no engine.
+// Producers fill it; unset fields stay at their defaults.
+struct Tag {
+  std::uint32_t layer = 0;       // one Layer bit; 0 = untagged (version 1 recordings)
+  std::int32_t body = -1;        // the body drawn, or the first body of a pair or contact
+  std::int32_t otherBody = -1;   // the second body of a pair or contact
+  std::int32_t node = -1;        // broad-phase tree node (tree and fat layers)
+  std::int32_t parent = -1;      // that node's parent, -1 at the root
+  std::int32_t depth = -1;       // tree depth of the node, or of a tree legend line
+  bool operator==(const Tag&) const = default;
+};
+
+inline Tag tagOf(Layer layer, int body = -1, int otherBody = -1) {
+  Tag tag;
+  tag.layer = static_cast<std::uint32_t>(layer);
+  tag.body = body;
+  tag.otherBody = otherBody;
+  return tag;
+}
+
 struct SolidBox {
   Vec3 center;
   Quat orientation = Quat::Identity();
   Vec3 halfExtents;
   Color color;
+  Tag tag;
 };
 
 struct SolidSphere {
@@ -89,6 +113,7 @@ struct SolidSphere {
   Quat orientation = Quat::Identity();
   double radius = 1;
   Color color;
+  Tag tag;
 };
 
 // Capsule along its local y axis: a cylinder of half height `halfHeight` with
@@ -99,6 +124,7 @@ struct SolidCapsule {
   double radius = 0.5;
   double halfHeight = 0.5;
   Color color;
+  Tag tag;
 };
 
 // Triangle mesh in local coordinates, shared between frames. `id` is stable
@@ -114,6 +140,7 @@ struct SolidMesh {
   Quat orientation = Quat::Identity();
   std::shared_ptr<const TriangleMesh> mesh;
   Color color;
+  Tag tag;
 };
 
 // Twelve edges of an oriented box (identity orientation for AABBs).
@@ -122,23 +149,27 @@ struct WireBox {
   Quat orientation = Quat::Identity();
   Vec3 halfExtents;
   Color color;
+  Tag tag;
 };
 
 struct Line {
   Vec3 from, to;
   Color color;
+  Tag tag;
 };
 
 struct Point {
   Vec3 position;
   float sizePixels = 6;
   Color color;
+  Tag tag;
 };
 
 // A line with a head at `to`.
 struct Arrow {
   Vec3 from, to;
   Color color;
+  Tag tag;
 };
 
 // Bounds on overlay text. The renderer builds about 5.5 KiB of triangles per
@@ -154,6 +185,30 @@ struct Text {
   float scale = 2;
   std::string text;
   Color color;
+  Tag tag;
+};
+
+// Text anchored at a point in the world (body labels): the renderer projects
+// the anchor and centres the text above it; anchors behind the camera draw nothing.
+struct Label {
+  Vec3 position;
+  float scale = 1;
+  std::string text;
+  Color color;
+  Tag tag;
+};
+
+// One body's state in a frame: what a viewer needs for --labels, --highlight,
+// --follow and the overlay of a body, without the engine. Not drawn itself.
+struct BodyInfo {
+  std::int32_t index = 0;
+  std::string name;  // the scene's name for the body, or empty
+  Vec3 position = Vec3::Zero(), linearVelocity = Vec3::Zero(), angularVelocity = Vec3::Zero();
+  Vec3 boundsMin = Vec3::Zero(), boundsMax = Vec3::Zero();  // world AABB of the collider
+  std::int32_t contacts = 0;   // contact points shown for it in this frame
+  std::int32_t treeLeaf = -1;  // its broad-phase tree leaf, and that leaf's parent (-1: none)
+  std::int32_t treeParent = -1;
+  bool isStatic = false, asleep = false;
 };
 
 struct Frame {
@@ -166,10 +221,21 @@ struct Frame {
   std::vector<Point> points;
   std::vector<Arrow> arrows;
   std::vector<Text> texts;
+  std::vector<Label> labels;
+  std::vector<BodyInfo> bodies;  // state, not primitives: not counted below
 
   void clear();
   bool empty() const;
   std::size_t primitiveCount() const;
 };
+
+// The sizes of a frame's primitive lists at one moment. fillTagsSince gives
+// every primitive added after it the fields of `tag` that it has not set, so
+// a producer tags a whole emission (one body, one layer) in one place.
+struct FrameMark {
+  std::array<std::size_t, 10> sizes{};
+};
+FrameMark markOf(const Frame& frame);
+void fillTagsSince(Frame& frame, const FrameMark& mark, const Tag& tag);
 
 }  // namespace physdbg::debugdraw
