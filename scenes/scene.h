@@ -32,6 +32,10 @@ struct SceneDescription {
   // errors raised while building the world name the file and the key.
   std::string source;
   std::vector<std::size_t> bodyEntries;
+  // The scene's "name" of each body ("" where it gives none; may be shorter
+  // than bodies): labels and the highlight overlay show it. A repeated body's
+  // copies are "name[0]", "name[1]", ...
+  std::vector<std::string> bodyNames;
   std::string description;
   WorldSettings world;
   int steps = 240;

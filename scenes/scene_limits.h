@@ -11,6 +11,7 @@ namespace physdbg::scene_limits {
 inline constexpr std::uintmax_t maxFileBytes = 64u << 20;  // 64 MiB of JSON
 inline constexpr int maxNesting = 32;                       // arrays and objects inside each other
 inline constexpr long long maxBodies = 100'000;  // after `repeat`; a touching pile costs ~5 KB a body
+inline constexpr std::size_t maxBodyNameLength = 64;  // a body's "name": a label, not a document
 inline constexpr std::size_t maxHullPoints = 100'000;       // per convex shape
 inline constexpr long long maxSteps = 10'000'000;
 inline constexpr int maxSubsteps = 1000;

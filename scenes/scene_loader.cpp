@@ -98,8 +98,26 @@ void readBodyKeys(const JsonReader& reader, const json& value, const std::string
 // One body entry may expand to a grid of bodies ("repeat"): x varies fastest,
 // then z, then y, so generated layers stack upwards in file order. The grid's
 // size is checked against the scene's body limit before anything is added.
+void addBody(const BodyDefinition& body, std::size_t entry, std::string name, SceneDescription& scene) {
+  scene.bodies.push_back(body);
+  scene.bodyEntries.push_back(entry);
+  if (!name.empty() || !scene.bodyNames.empty()) scene.bodyNames.resize(scene.bodies.size());
+  if (!name.empty()) scene.bodyNames.back() = std::move(name);
+}
+
+// A label over the body: printable ASCII, short enough to read on screen.
+std::string readBodyName(const JsonReader& reader, const json& value, const std::string& path) {
+  const std::string name = reader.string(value, path);
+  if (name.empty() || name.size() > limits::maxBodyNameLength)
+    reader.fail(path, "must have 1 to " + std::to_string(limits::maxBodyNameLength) + " characters, got " +
+                          std::to_string(name.size()));
+  for (const char c : name)
+    if (c < 0x20 || c > 0x7e) reader.fail(path, "must be printable ASCII, got \"" + excerpt(name) + "\"");
+  return name;
+}
+
 void expandRepeat(const JsonReader& reader, const json& repeat, const std::string& path, BodyDefinition body,
-                  std::size_t entry, SceneDescription& scene) {
+                  std::size_t entry, const std::string& name, SceneDescription& scene) {
   reader.requireObject(repeat, path);
   reader.checkKeys(repeat, path, {"count", "spacing"});
   if (!repeat.contains("count") || !repeat.contains("spacing")) reader.fail(path, "needs both count and spacing");
@@ -123,8 +141,8 @@ void expandRepeat(const JsonReader& reader, const json& repeat, const std::strin
         if (!body.position.allFinite() || body.position.cwiseAbs().maxCoeff() > limits::maxMagnitude)
           reader.fail(path + ".spacing", "places a body farther than " + std::to_string(limits::maxMagnitude) +
                                               " m from the origin");
-        scene.bodies.push_back(body);
-        scene.bodyEntries.push_back(entry);
+        const long long copy = (y * count[2] + z) * count[0] + x;
+        addBody(body, entry, name.empty() ? "" : name + "[" + std::to_string(copy) + "]", scene);
       }
 }
 
@@ -139,11 +157,12 @@ void readBody(const JsonReader& reader, const json& value, std::size_t entry, Sc
   body.collider = readShape(reader, reader.required(value, path, "shape"), path + ".shape");
   readBodyKeys(reader, value, path, body);
   body = aboutCentreOfMass(body);  // the scene states the body where its centre of mass is
-  if (value.contains("repeat")) return expandRepeat(reader, value["repeat"], path + ".repeat", body, entry, scene);
+  const std::string name = value.contains("name") ? readBodyName(reader, value["name"], path + ".name") : "";
+  if (value.contains("repeat"))
+    return expandRepeat(reader, value["repeat"], path + ".repeat", body, entry, name, scene);
   if (static_cast<long long>(scene.bodies.size()) >= limits::maxBodies)
     reader.fail(path, "makes more than " + std::to_string(limits::maxBodies) + " bodies in the scene");
-  scene.bodies.push_back(body);
-  scene.bodyEntries.push_back(entry);
+  addBody(body, entry, name, scene);
 }
 
 int readCount(const JsonReader& reader, const json& value, const std::string& path, int high) {

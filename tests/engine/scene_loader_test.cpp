@@ -82,6 +82,18 @@ struct BadScene {
 
 class SceneLoaderRejects : public ::testing::TestWithParam<BadScene> {};
 
+// Names label bodies (--labels, --highlight); copies of a repeated body are
+// numbered in repeat order, and a scene without names keeps no name list.
+TEST(SceneLoader, BodyNamesFollowBodiesThroughRepeat) {
+  const SceneDescription scene = parseScene(R"({"bodies": [
+      {"shape": {"sphere": {"radius": 1}}},
+      {"shape": {"sphere": {"radius": 0.1}}, "name": "pebble", "repeat": {"count": [2, 1, 1], "spacing": [1, 0, 0]}},
+      {"shape": {"box": {"half_extents": [1, 1, 1]}}, "name": "lid"}]})",
+                                            "names.json");
+  EXPECT_EQ(scene.bodyNames, (std::vector<std::string>{"", "pebble[0]", "pebble[1]", "lid"}));
+  EXPECT_TRUE(parseScene(R"({"bodies": [{"shape": {"sphere": {"radius": 1}}}]})", "plain.json").bodyNames.empty());
+}
+
 TEST_P(SceneLoaderRejects, WithAMessageNamingFileAndKey) {
   const std::string message = errorOf(GetParam().json);
   ASSERT_FALSE(message.empty()) << "accepted: " << GetParam().json;
@@ -125,7 +137,16 @@ INSTANTIATE_TEST_SUITE_P(
                  "lock_rotation"},
         BadScene{"unknown layer", R"({"layers": "shapes,glitter", "bodies": []})", "glitter"},
         BadScene{"fractional steps", R"({"steps": 2.5, "bodies": []})", "steps"},
-        BadScene{"bad camera", R"({"camera": {"eye": [1, 1, 1], "target": [1, 1, 1]}, "bodies": []})", "camera"}),
+        BadScene{"bad camera", R"({"camera": {"eye": [1, 1, 1], "target": [1, 1, 1]}, "bodies": []})", "camera"},
+        BadScene{"empty name", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "name": ""}]})", "bodies[0].name"},
+        BadScene{"long name", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "name": ")"
+                 "nnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnn"
+                 R"("}]})",
+                 "1 to 64 characters"},
+        BadScene{"control character in name",
+                 R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "name": "a\nb"}]})", "printable ASCII"},
+        BadScene{"name not a string", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "name": 3}]})",
+                 "bodies[0].name"}),
     [](const ::testing::TestParamInfo<BadScene>& info) {
       std::string name = info.param.what;
       for (char& c : name)
