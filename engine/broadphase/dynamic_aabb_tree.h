@@ -87,6 +87,7 @@ class DynamicAabbTree {
   bool isLeaf(int node) const { return nodes_[node].child1 == nullNode; }
   int child1(int node) const { return nodes_[node].child1; }
   int child2(int node) const { return nodes_[node].child2; }
+  int parent(int node) const { return nodes_[node].parent; }  // nullNode at the root
   const Aabb& box(int node) const { return nodes_[node].box; }
 
  private:

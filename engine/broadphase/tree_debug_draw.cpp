@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <utility>
 
 namespace physdbg {
 namespace {
@@ -15,8 +16,11 @@ constexpr dd::Color kPalestNode{0.8f, 0.88f, 1.0f, 1.0f};
 constexpr float kDeepestAlpha = 0.7f;
 constexpr float kStepPerDepth = 0.78f;  // share of the remaining change left after each level
 constexpr int kMaxLegendDepths = 14;
+constexpr float kLegendLeft = 6, kLegendTop = 64, kLegendLineHeight = 11;
 
-dd::WireBox wireBox(const Aabb& box, dd::Color color) { return {box.center(), Quat::Identity(), box.halfExtents(), color}; }
+dd::WireBox wireBox(const Aabb& box, dd::Color color, const dd::Tag& tag = {}) {
+  return {box.center(), Quat::Identity(), box.halfExtents(), color, tag};
+}
 
 bool sameBox(const Aabb& a, const Aabb& b) { return a.min == b.min && a.max == b.max; }
 
@@ -33,26 +37,44 @@ std::string legendLine(int depth, const DepthCount& count) {
   return line;
 }
 
+// A tree primitive's tag: a viewer shows or hides it by depth (--tree-depth)
+// and finds a body's path to the root (--highlight) by node and parent.
+dd::Tag treeTag(dd::Layer layer, int node, int parent, int depth) {
+  dd::Tag tag = dd::tagOf(layer);
+  tag.node = node;
+  tag.parent = parent;
+  tag.depth = depth;
+  return tag;
+}
+
+// A legend line tagged with the depth it names, so filtering by depth keeps
+// the lines of the depths shown; the header names none (-1).
+dd::Text legendText(float y, std::string text, dd::Color color, int depth) {
+  return {kLegendLeft, y, 1, std::move(text), color, treeTag(dd::Layer::Tree, -1, -1, depth)};
+}
+
 // Top left, under the two overlay lines (28 px at scale 1, 56 at scale 2).
+// The "... to N" line stands for the depths it leaves out: tagged with the first.
 void drawLegend(const std::map<int, DepthCount>& counts, dd::Frame& frame) {
   if (counts.empty()) return;
-  constexpr float left = 6, top = 64, lineHeight = 11, scale = 1;
-  frame.texts.push_back({left, top, scale, "tree depth", {1, 1, 1, 1}});
-  float y = top + lineHeight;
+  frame.texts.push_back(legendText(kLegendTop, "tree depth", {1, 1, 1, 1}, -1));
+  float y = kLegendTop + kLegendLineHeight;
   int shown = 0;
   for (const auto& [depth, count] : counts) {
     if (++shown > kMaxLegendDepths) {
-      frame.texts.push_back({left, y, scale, "... to " + std::to_string(counts.rbegin()->first), {1, 1, 1, 1}});
+      frame.texts.push_back(legendText(y, "... to " + std::to_string(counts.rbegin()->first), {1, 1, 1, 1}, depth));
       break;
     }
     dd::Color color = treeNodeColor(depth);
     color.a = 1;  // text must read on its own
-    frame.texts.push_back({left, y, scale, legendLine(depth, count), color});
-    y += lineHeight;
+    frame.texts.push_back(legendText(y, legendLine(depth, count), color, depth));
+    y += kLegendLineHeight;
   }
 }
 
 }  // namespace
+
+float treeLegendBottom() { return kLegendTop + kLegendLineHeight * (kMaxLegendDepths + 2); }
 
 dd::Color treeNodeColor(int depth) {
   const float change = 1.0f - std::pow(kStepPerDepth, static_cast<float>(std::max(depth, 0)));
@@ -79,11 +101,14 @@ void drawTree(const DynamicAabbTree& tree, const TreeDrawOptions& options, dd::F
     }
     if (depth < options.minDepth || depth > options.maxDepth) continue;
     if (leaf) {
-      if (options.leaves) frame.wireBoxes.push_back(wireBox(tree.box(node), dd::colors::fatBox));
+      if (options.leaves)
+        frame.wireBoxes.push_back(
+            wireBox(tree.box(node), dd::colors::fatBox, treeTag(dd::Layer::Fat, node, parent, depth)));
       continue;
     }
     if (!options.internalNodes) continue;
-    frame.wireBoxes.push_back(wireBox(tree.box(node), treeNodeColor(depth)));
+    frame.wireBoxes.push_back(
+        wireBox(tree.box(node), treeNodeColor(depth), treeTag(dd::Layer::Tree, node, parent, depth)));
     DepthCount& count = counts[depth];
     ++count.nodes;
     if (parent != DynamicAabbTree::nullNode && sameBox(tree.box(node), tree.box(parent))) ++count.sameAsParent;

@@ -25,6 +25,14 @@ struct TreeDrawOptions {
 // a depth keeps its colour from frame to frame.
 debugdraw::Color treeNodeColor(int depth);
 
+// The lowest pixel row the legend can reach (its header, at most 14 depth
+// lines and "... to N"), whatever the tree: other legends on the left
+// go below it and never jump with the tree's height.
+float treeLegendBottom();
+
+// Internal nodes are tagged layer Tree, fat leaves layer Fat, both with their
+// node, parent (-1 at the root) and depth, so a viewer can filter by depth and
+// walk a leaf's path to the root; legend lines carry the depth they name.
 void drawTree(const DynamicAabbTree& tree, const TreeDrawOptions& options, debugdraw::Frame& frame);
 
 // Both subtrees of each rotation, as they were just after the swap, joined by a line.
