@@ -1,8 +1,10 @@
 // Turns the world's state into debug-draw primitives, one function per layer.
 // Only the requested layers are computed.
 #include <cmath>
+#include <cstdio>
 
 #include <algorithm>
+#include <string>
 
 #include "engine/broadphase/dynamic_aabb_tree.h"
 #include "engine/broadphase/tree_debug_draw.h"
@@ -92,18 +94,20 @@ dd::Color dimmedIf(bool resting, dd::Color color) { return resting ? shade(color
 // would only clutter the picture. Points sleeping bodies rest on are dimmed.
 void emitShownContacts(const std::vector<ShownContact>& points, double scale, dd::Frame& frame) {
   for (std::size_t first = 0, last = 0; first < points.size(); first = last) {
+    const dd::Tag tag = dd::tagOf(dd::Layer::Contacts, static_cast<int>(points[first].pair.a),
+                                  static_cast<int>(points[first].pair.b));
     Vec3 middle = Vec3::Zero();
     double deepest = 0.0;
     for (last = first; last < points.size() && points[last].pair == points[first].pair; ++last) {
       const ShownContact& contact = points[last];
-      frame.points.push_back({contact.point, 7.0f, dimmedIf(contact.resting, dd::colors::contactPoint)});
+      frame.points.push_back({contact.point, 7.0f, dimmedIf(contact.resting, dd::colors::contactPoint), tag});
       middle += contact.point;
       deepest = std::max(deepest, contact.depth);
     }
     middle /= static_cast<double>(last - first);
     const double length = scale * (0.25 + 4.0 * deepest);
     frame.arrows.push_back({middle, middle + points[first].normal * length,
-                            dimmedIf(points[first].resting, dd::colors::contactNormal)});
+                            dimmedIf(points[first].resting, dd::colors::contactNormal), tag});
   }
 }
 
@@ -119,10 +123,16 @@ std::vector<int> contactStates(const std::vector<ShownContact>& points, std::siz
   return states;
 }
 
+struct IslandBox {
+  Aabb box;
+  int lowestBody = 0;  // the island's tag: --highlight of that body finds it
+};
+
 // Sleeping bodies linked by the contacts they rest on fall asleep and wake
 // together: one island. Static bodies link nothing (a floor would join every
 // pile). Islands of two or more bodies, in order of their lowest body.
-std::vector<Aabb> sleepingIslandBoxes(const std::vector<RigidBody>& bodies, const std::vector<ShownContact>& resting) {
+std::vector<IslandBox> sleepingIslandBoxes(const std::vector<RigidBody>& bodies,
+                                           const std::vector<ShownContact>& resting) {
   std::vector<std::size_t> root(bodies.size());
   for (std::size_t i = 0; i < root.size(); ++i) root[i] = i;
   const auto find = [&root](std::size_t i) {
@@ -136,19 +146,19 @@ std::vector<Aabb> sleepingIslandBoxes(const std::vector<RigidBody>& bodies, cons
   }
   std::vector<int> size(bodies.size(), 0);
   for (std::size_t i = 0; i < bodies.size(); ++i) ++size[find(i)];
-  std::vector<Aabb> boxes;
+  std::vector<IslandBox> islands;
   std::vector<int> slot(bodies.size(), -1);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const std::size_t island = find(i);  // the island's lowest body, met first
     if (size[island] < 2) continue;
     const Aabb box = bodies[i].collider().worldBounds(bodies[i].transform());
     if (slot[island] < 0) {
-      slot[island] = static_cast<int>(boxes.size());
-      boxes.push_back(box);
+      slot[island] = static_cast<int>(islands.size());
+      islands.push_back({box, static_cast<int>(island)});
     }
-    boxes[slot[island]] = boxes[slot[island]].merged(box);
+    islands[slot[island]].box = islands[slot[island]].box.merged(box);
   }
-  return boxes;
+  return islands;
 }
 
 dd::Color boxColor(int contactState) {
@@ -156,75 +166,195 @@ dd::Color boxColor(int contactState) {
   return dimmedIf(contactState == 1, dd::colors::colliding);
 }
 
+// The parent of a body's tree leaf: -1 without a tree, without a leaf (a
+// frozen body) or when the leaf is the root.
+int leafParent(const DynamicAabbTree* tree, int proxy) { return tree && proxy >= 0 ? tree->parent(proxy) : -1; }
+
+// The fat box is a tree leaf: tagged with it and its parent, so a viewer can
+// walk from a body to the root.
+dd::Tag fatTag(std::size_t body, const DynamicAabbTree* tree, int proxy) {
+  dd::Tag tag = dd::tagOf(dd::Layer::Fat, static_cast<int>(body));
+  if (tree) {
+    tag.node = proxy;
+    tag.parent = leafParent(tree, proxy);
+  }
+  return tag;
+}
+
+// Magenta-red: apart from the orange normals, the cyan velocities and the
+// pale violet pairs.
+constexpr dd::Color impulseColor{1.0f, 0.2f, 0.6f, 1.0f};
+
+// The nearest value of 1, 2, 5 times a power of ten (nearest on a log scale).
+double roundToOneTwoFive(double value) {
+  const double decade = std::pow(10.0, std::floor(std::log10(value)));
+  double best = decade;
+  for (const double step : {2.0, 5.0, 10.0})
+    if (std::abs(std::log(step * decade / value)) < std::abs(std::log(best / value))) best = step * decade;
+  return best;
+}
+
+// "200", "0.5": newtons as the legend writes them.
+std::string newtonsText(double newtons) {
+  char text[32];
+  std::snprintf(text, sizeof text, newtons >= 1 ? "%.0f" : "%g", newtons);
+  return text;
+}
+
+// One arrow per point that pushed: from the point along the normal (the force
+// on b), force = impulse / substep times metresPerNewton long, and a legend
+// that reads the scale.
+void emitImpulses(const std::vector<ShownContact>& points, double substep, double metresPerNewton, dd::Frame& frame) {
+  bool drawn = false;
+  for (const ShownContact& contact : points) {
+    if (!(contact.impulse > 0.0)) continue;
+    const Vec3 arrow = contact.normal * (contact.impulse / substep * metresPerNewton);
+    frame.arrows.push_back({contact.point, contact.point + arrow, dimmedIf(contact.resting, impulseColor),
+                            dd::tagOf(dd::Layer::Impulses, static_cast<int>(contact.pair.a),
+                                      static_cast<int>(contact.pair.b))});
+    drawn = true;
+  }
+  if (!drawn) return;
+  // Left, under the tree legend's reach: the same place whatever the tree draws.
+  frame.texts.push_back({6, treeLegendBottom() + 6, 1, "impulses: 1 m = " + newtonsText(1.0 / metresPerNewton) + " N",
+                         impulseColor, dd::tagOf(dd::Layer::Impulses)});
+}
+
+// Contact points shown per body, as a or b.
+std::vector<int> shownContactCounts(const std::vector<ShownContact>& points, std::size_t bodyCount) {
+  std::vector<int> counts(bodyCount, 0);
+  for (const ShownContact& contact : points) {
+    ++counts[contact.pair.a];
+    ++counts[contact.pair.b];
+  }
+  return counts;
+}
+
 }  // namespace
 
 void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts* counts) const {
   if (layers.empty()) return;
-  // Runs one layer's emission; when counting, adds what it put in the frame to that layer.
-  const auto counted = [&frame, counts](dd::Layer layer, const auto& emit) {
-    const std::size_t before = counts ? frame.primitiveCount() : 0;
-    emit();
-    if (counts) counts->add(layer, frame.primitiveCount() - before);
+  // Runs one emission, gives what it appended the fields of `tag` it did not
+  // set itself (the layer always) and, when counting, counts it for the layer.
+  const auto emit = [&frame, counts](const dd::Tag& tag, const auto& draw) {
+    const dd::FrameMark mark = dd::markOf(frame);
+    const std::size_t before = frame.primitiveCount();
+    draw();
+    dd::fillTagsSince(frame, mark, tag);
+    if (counts) counts->add(static_cast<dd::Layer>(tag.layer), frame.primitiveCount() - before);
   };
   std::vector<std::shared_ptr<const dd::TriangleMesh>> meshes;
   if (layers.has(dd::Layer::Shapes)) meshes = hullMeshes();
   double typicalSize = 0;
-  const bool showContacts = layers.has(dd::Layer::Contacts) || layers.has(dd::Layer::Aabbs);
+  const bool showContacts =
+      layers.has(dd::Layer::Contacts) || layers.has(dd::Layer::Aabbs) || layers.has(dd::Layer::Impulses);
   const std::vector<ShownContact> shown = showContacts ? shownContacts() : std::vector<ShownContact>{};
   const std::vector<int> contactState = contactStates(shown, bodies_.size());
+  const DynamicAabbTree* broadPhaseTree = tree();
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     const RigidBody& body = bodies_[i];
     if (!body.hasFiniteState()) continue;
     const Aabb box = body.collider().worldBounds(body.transform());
     if (!body.isStatic()) typicalSize = std::max(typicalSize, box.halfExtents().maxCoeff());
+    const auto tagOfBody = [i](dd::Layer layer) { return dd::tagOf(layer, static_cast<int>(i)); };
     if (layers.has(dd::Layer::Shapes)) {
       dd::Color color = body.isStatic() ? dd::colors::staticBody : bodyColor(i);
       if (layers.has(dd::Layer::Sleep) && asleep_[i]) {
         color = shade(color, 0.35f);
         if (counts) counts->add(dd::Layer::Sleep, 1);  // the darkened body is what the layer drew
       }
-      counted(dd::Layer::Shapes, [&] { emitShape(body, color, meshes[i], frame); });
+      emit(tagOfBody(dd::Layer::Shapes), [&] { emitShape(body, color, meshes[i], frame); });
     }
-    if (layers.has(dd::Layer::Wire)) counted(dd::Layer::Wire, [&] { emitWire(body, frame); });
+    if (layers.has(dd::Layer::Wire)) emit(tagOfBody(dd::Layer::Wire), [&] { emitWire(body, frame); });
     if (layers.has(dd::Layer::Aabbs))
-      counted(dd::Layer::Aabbs, [&] {
+      emit(tagOfBody(dd::Layer::Aabbs), [&] {
         frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), boxColor(contactState[i])});
       });
     if (layers.has(dd::Layer::Fat) && proxies_[i] >= 0)
-      counted(dd::Layer::Fat, [&] {
+      emit(fatTag(i, broadPhaseTree, proxies_[i]), [&] {
         const Aabb& fat = broadPhase_->fatBox(proxies_[i]);
         frame.wireBoxes.push_back({fat.center(), Quat::Identity(), fat.halfExtents(), dd::colors::fatLayer});
       });
     if (layers.has(dd::Layer::Velocities) && !body.isStatic() && body.linearVelocity() != Vec3::Zero())
-      counted(dd::Layer::Velocities, [&] {
+      emit(tagOfBody(dd::Layer::Velocities), [&] {
         frame.arrows.push_back({body.position(), body.position() + body.linearVelocity() * 0.1, {0.3f, 0.9f, 1.0f, 1}});
       });
     if (layers.has(dd::Layer::Sleep) && !layers.has(dd::Layer::Shapes) && asleep_[i])
-      counted(dd::Layer::Sleep, [&] {
+      emit(tagOfBody(dd::Layer::Sleep), [&] {
         frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), {0.5f, 0.3f, 0.7f, 1}});
       });
   }
   if (layers.has(dd::Layer::Sleep))
-    counted(dd::Layer::Sleep, [&] {
-      for (const Aabb& island : sleepingIslandBoxes(bodies_, resting_))
-        frame.wireBoxes.push_back({island.center(), Quat::Identity(), island.halfExtents() + Vec3::Constant(0.05),
-                                   sleepingIsland});
-    });
-  if (layers.has(dd::Layer::Tree))
-    counted(dd::Layer::Tree, [&] {
+    for (const IslandBox& island : sleepingIslandBoxes(bodies_, resting_))
+      emit(dd::tagOf(dd::Layer::Sleep, island.lowestBody), [&] {
+        frame.wireBoxes.push_back({island.box.center(), Quat::Identity(),
+                                   island.box.halfExtents() + Vec3::Constant(0.05), sleepingIsland});
+      });
+  if (layers.has(dd::Layer::Tree) && broadPhaseTree)
+    emit(dd::tagOf(dd::Layer::Tree), [&] {
       TreeDrawOptions options;
       options.leaves = false;  // the fat boxes are the `fat` layer
-      if (const DynamicAabbTree* broadPhaseTree = tree()) drawTree(*broadPhaseTree, options, frame);
+      drawTree(*broadPhaseTree, options, frame);
     });
   if (layers.has(dd::Layer::Contacts))
-    counted(dd::Layer::Contacts, [&] {
-      emitShownContacts(shown, std::max(typicalSize, 0.2), frame);
+    emit(dd::tagOf(dd::Layer::Contacts), [&] { emitShownContacts(shown, std::max(typicalSize, 0.2), frame); });
+  if (layers.has(dd::Layer::Impulses))
+    emit(dd::tagOf(dd::Layer::Impulses), [&] {
+      // The solver's impulses are per substep. The world does not see which
+      // islands the solver stiffened (more, shorter substeps): their forces
+      // read short by base / their substeps (mass_stack: 8 / 12).
+      const double substep = settings_.dt / std::max(settings_.solver.substeps, 1);
+      emitImpulses(shown, substep, impulseScale(), frame);
     });
   if (layers.has(dd::Layer::Pairs))
-    counted(dd::Layer::Pairs, [&] {
+    emit(dd::tagOf(dd::Layer::Pairs), [&] {
       for (const BodyPair& pair : pairs_)
-        frame.lines.push_back({bodies_[pair.a].position(), bodies_[pair.b].position(), {0.9f, 0.5f, 0.9f, 1}});
+        frame.lines.push_back({bodies_[pair.a].position(), bodies_[pair.b].position(), {0.9f, 0.5f, 0.9f, 1},
+                               dd::tagOf(dd::Layer::Pairs, static_cast<int>(pair.a), static_cast<int>(pair.b))});
     });
+}
+
+// The heaviest dynamic body's weight drawn about as long as that body is big,
+// rounded so the legend reads "1 m = 200 N". From masses and shapes only, so
+// the scale stays the same from frame to frame and arrows compare.
+double World::impulseScale() const {
+  const RigidBody* heaviest = nullptr;
+  for (const RigidBody& body : bodies_)
+    if (!body.isStatic() && (!heaviest || body.mass() > heaviest->mass())) heaviest = &body;
+  const double gravity = settings_.gravity.norm() > 0.0 ? settings_.gravity.norm() : 9.81;
+  double weight = gravity, size = 1.0;  // 1 kg, 1 m without a dynamic body
+  if (heaviest) {
+    const Aabb local = heaviest->collider().localBounds();
+    weight = heaviest->mass() * gravity;
+    size = (local.max - local.min).maxCoeff();
+  }
+  if (!(weight > 0.0 && size > 0.0 && std::isfinite(weight / size))) return 0.1;
+  return 1.0 / roundToOneTwoFive(weight / size);
+}
+
+// State, not drawing: what a viewer needs to label, follow and highlight a
+// body without the engine. A body whose state stopped being finite keeps its
+// index and flags, and zero vectors (a recording holds no NaN).
+void World::emitBodies(dd::Frame& frame) const {
+  const std::vector<int> contactCounts = shownContactCounts(shownContacts(), bodies_.size());
+  const DynamicAabbTree* broadPhaseTree = tree();
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const RigidBody& body = bodies_[i];
+    dd::BodyInfo& info = frame.bodies.emplace_back();
+    info.index = static_cast<std::int32_t>(i);
+    info.contacts = contactCounts[i];
+    info.treeLeaf = broadPhaseTree ? proxies_[i] : -1;
+    info.treeParent = leafParent(broadPhaseTree, proxies_[i]);
+    info.isStatic = body.isStatic();
+    info.asleep = asleep_[i];
+    if (!body.hasFiniteState()) continue;
+    const Aabb bounds = body.collider().worldBounds(body.transform());
+    info.position = body.position();
+    info.linearVelocity = body.linearVelocity();
+    info.angularVelocity = body.angularVelocity();
+    info.boundsMin = bounds.min;
+    info.boundsMax = bounds.max;
+  }
 }
 
 // One drawing mesh per convex collider, shared by the bodies that share it;
