@@ -17,6 +17,15 @@ constexpr std::uint64_t chunkHeadBytes = 12;
 constexpr std::uint64_t maxFrameIndex = static_cast<std::uint64_t>(std::numeric_limits<int>::max());
 // Quaternion lengths the renderer can normalise without losing the rotation.
 constexpr double minRotationNorm = 1e-6, maxRotationNorm = 1e6;
+// The layer bits a version 2 tag may name (Shapes .. Grid). A new layer is a
+// new format version: an older reader could not say what to draw for it.
+constexpr std::uint32_t knownLayerBits = (static_cast<std::uint32_t>(Layer::Grid) << 1) - 1;
+// Encoded sizes in version 2: a tag (u32 layer, five i32) and the fixed part
+// of a label (before its tag) and of a body, strings without their characters.
+constexpr std::size_t tagBytes = 4 + 5 * 4;
+constexpr std::size_t labelBytes = 24 + 4 + 4 + 16;
+constexpr std::size_t bodyBytes = 4 + 4 + 5 * 24 + 3 * 4 + 1;
+constexpr std::uint8_t staticFlag = 1, asleepFlag = 2;
 
 [[noreturn]] void refuse(const std::string& name, const std::string& what) {
   throw std::invalid_argument("recording '" + name + "': " + what);
@@ -25,7 +34,9 @@ constexpr double minRotationNorm = 1e-6, maxRotationNorm = 1e6;
 class ByteWriter {
  public:
   std::string bytes;
+  void u8(std::uint8_t value) { little(value, 1); }
   void u32(std::uint32_t value) { little(value, 4); }
+  void i32(std::int32_t value) { u32(static_cast<std::uint32_t>(value)); }
   void u64(std::uint64_t value) { little(value, 8); }
   void f32(float value) { u32(std::bit_cast<std::uint32_t>(value)); }
   void f64(double value) { u64(std::bit_cast<std::uint64_t>(value)); }
@@ -42,6 +53,10 @@ class ByteWriter {
     u32(static_cast<std::uint32_t>(s.size()));
     bytes += s;
   }
+  void tag(const Tag& t) {
+    u32(t.layer);
+    for (const std::int32_t field : {t.body, t.otherBody, t.node, t.parent, t.depth}) i32(field);
+  }
 
  private:
   void little(std::uint64_t value, int count) {
@@ -55,7 +70,9 @@ class ByteWriter {
 class ByteReader {
  public:
   ByteReader(const std::string& bytes, const std::string& name) : bytes_(bytes), name_(name) {}
+  std::uint8_t u8() { return static_cast<std::uint8_t>(little(1)); }
   std::uint32_t u32() { return static_cast<std::uint32_t>(little(4)); }
+  std::int32_t i32() { return static_cast<std::int32_t>(u32()); }
   std::uint64_t u64() { return little(8); }
   float f32() { return std::bit_cast<float>(u32()); }
   double f64() { return std::bit_cast<double>(u64()); }
@@ -71,10 +88,17 @@ class ByteReader {
     const float r = f32(), g = f32(), b = f32(), a = f32();
     return {r, g, b, a};
   }
-  std::string text() {
+  Tag tag() {
+    Tag t;
+    t.layer = u32();
+    for (std::int32_t* field : {&t.body, &t.otherBody, &t.node, &t.parent, &t.depth}) *field = i32();
+    return t;
+  }
+  // `what` names the string in messages ("a text", "a name").
+  std::string text(const char* what = "a text") {
     const std::uint32_t size = u32();
     if (size > maxTextCharacters)
-      fail("a text of " + std::to_string(size) + " characters, over the limit of " +
+      fail(std::string(what) + " of " + std::to_string(size) + " characters, over the limit of " +
            std::to_string(maxTextCharacters) + " per text");
     need(size);
     std::string s = bytes_.substr(offset_, size);
@@ -152,6 +176,17 @@ class ItemCheck {
       problem = std::string(what) + " " + number(value) + " is outside " + number(low) + ".." + number(high);
     return *this;
   }
+  ItemCheck& atLeast(std::int32_t value, std::int32_t low, const char* what) {
+    if (problem.empty() && value < low)
+      problem = std::string(what) + " " + std::to_string(value) + " is below " + std::to_string(low);
+    return *this;
+  }
+  ItemCheck& ordered(const Vec3& low, const Vec3& high, const char* what) {
+    for (int i = 0; i < 3; ++i)
+      if (problem.empty() && !(low[i] <= high[i]))
+        problem = std::string(what) + " " + "xyz"[i] + ": min " + number(low[i]) + " is above max " + number(high[i]);
+    return *this;
+  }
 };
 
 template <typename Box>
@@ -207,10 +242,14 @@ std::string problemOf(const Point& p) {
       .problem;
 }
 
+std::string lengthProblem(const std::string& text, const char* what) {
+  if (text.size() <= maxTextCharacters) return {};
+  return std::string(what) + " of " + std::to_string(text.size()) + " characters, over the limit of " +
+         std::to_string(maxTextCharacters) + " per text";
+}
+
 std::string problemOf(const Text& t) {
-  if (t.text.size() > maxTextCharacters)
-    return std::to_string(t.text.size()) + " characters, over the limit of " + std::to_string(maxTextCharacters) +
-           " per text";
+  if (std::string problem = lengthProblem(t.text, "a text"); !problem.empty()) return problem;
   return ItemCheck()
       .within(t.x, -maxTextPixels, maxTextPixels, "x")
       .within(t.y, -maxTextPixels, maxTextPixels, "y")
@@ -219,13 +258,60 @@ std::string problemOf(const Text& t) {
       .problem;
 }
 
+std::string problemOf(const Label& l) {
+  if (std::string problem = lengthProblem(l.text, "a text"); !problem.empty()) return problem;
+  return ItemCheck()
+      .position(l.position, "position")
+      .within(l.scale, minTextScale, maxTextScale, "scale")
+      .color(l.color)
+      .problem;
+}
+
+std::string problemOf(const BodyInfo& b) {
+  if (std::string problem = lengthProblem(b.name, "a name"); !problem.empty()) return problem;
+  return ItemCheck()
+      .atLeast(b.index, 0, "index")
+      .position(b.position, "position")
+      .position(b.linearVelocity, "linear velocity")
+      .position(b.angularVelocity, "angular velocity")
+      .position(b.boundsMin, "bounds min")
+      .position(b.boundsMax, "bounds max")
+      .ordered(b.boundsMin, b.boundsMax, "bounds")
+      .atLeast(b.contacts, 0, "contacts")
+      .atLeast(b.treeLeaf, -1, "tree leaf")
+      .atLeast(b.treeParent, -1, "tree parent")
+      .problem;
+}
+
+// Layer 0 (untagged) or exactly one known layer bit; body and tree fields -1 (none) or more.
+std::string tagProblem(const Tag& tag) {
+  if (tag.layer != 0 && (!std::has_single_bit(tag.layer) || (tag.layer & knownLayerBits) == 0))
+    return "tag layer " + std::to_string(tag.layer) + " is neither 0 nor one known layer bit (1 .. " +
+           std::to_string(static_cast<std::uint32_t>(Layer::Grid)) + ")";
+  return ItemCheck()
+      .atLeast(tag.body, -1, "tag body")
+      .atLeast(tag.otherBody, -1, "tag other body")
+      .atLeast(tag.node, -1, "tag node")
+      .atLeast(tag.parent, -1, "tag parent")
+      .atLeast(tag.depth, -1, "tag depth")
+      .problem;
+}
+
+template <typename Item>
+std::string itemProblem(const Item& item) {
+  std::string problem = problemOf(item);
+  if constexpr (requires { item.tag; })
+    if (problem.empty()) problem = tagProblem(item.tag);
+  return problem;
+}
+
 template <typename Item>
 std::string listProblem(const std::vector<Item>& items, const char* list) {
   if (items.size() > maxListItems)
     return std::string(list) + ": " + std::to_string(items.size()) + " items, over the limit of " +
            std::to_string(maxListItems);
   for (std::size_t i = 0; i < items.size(); ++i) {
-    const std::string problem = problemOf(items[i]);
+    const std::string problem = itemProblem(items[i]);
     if (!problem.empty()) return std::string(list) + " item " + std::to_string(i) + ": " + problem;
   }
   return {};
@@ -242,11 +328,13 @@ std::string viewProblem(const View& view) {
   return problem.empty() ? problem : "view: " + problem;
 }
 
-std::string textTotalProblem(const std::vector<Text>& texts) {
+// Texts and labels are both drawn as glyph geometry, so they share one budget.
+std::string textTotalProblem(const Frame& frame) {
   std::size_t characters = 0;
-  for (const Text& text : texts) characters += text.text.size();
+  for (const Text& text : frame.texts) characters += text.text.size();
+  for (const Label& label : frame.labels) characters += label.text.size();
   if (characters <= maxFrameTextCharacters) return {};
-  return std::to_string(characters) + " characters of text, over the limit of " +
+  return std::to_string(characters) + " characters of text in texts and labels, over the limit of " +
          std::to_string(maxFrameTextCharacters) + " per frame";
 }
 
@@ -257,7 +345,8 @@ std::string frameProblem(const RecordedFrame& recorded) {
        {viewProblem(recorded.view), listProblem(f.boxes, "solid boxes"), listProblem(f.spheres, "solid spheres"),
         listProblem(f.capsules, "capsules"), listProblem(f.meshes, "solid meshes"),
         listProblem(f.wireBoxes, "wire boxes"), listProblem(f.lines, "lines"), listProblem(f.points, "points"),
-        listProblem(f.arrows, "arrows"), listProblem(f.texts, "texts"), textTotalProblem(f.texts)})
+        listProblem(f.arrows, "arrows"), listProblem(f.texts, "texts"), listProblem(f.labels, "labels"),
+        listProblem(f.bodies, "bodies"), textTotalProblem(f)})
     if (!problem.empty()) return "frame " + std::to_string(recorded.index) + ", " + problem;
   return {};
 }
@@ -331,6 +420,30 @@ std::shared_ptr<const TriangleMesh> decodeMesh(ByteReader& in) {
   return mesh;
 }
 
+void writeBody(ByteWriter& out, const BodyInfo& b) {
+  out.i32(b.index);
+  out.text(b.name);
+  for (const Vec3* v : {&b.position, &b.linearVelocity, &b.angularVelocity, &b.boundsMin, &b.boundsMax}) out.vec3(*v);
+  for (const std::int32_t field : {b.contacts, b.treeLeaf, b.treeParent}) out.i32(field);
+  out.u8(static_cast<std::uint8_t>((b.isStatic ? staticFlag : 0) | (b.asleep ? asleepFlag : 0)));
+}
+
+// `frame` and `item` name the body for flag bits the format does not define.
+void readBody(ByteReader& in, BodyInfo& b, int frame, std::ptrdiff_t item) {
+  b.index = in.i32();
+  b.name = in.text("a name");
+  for (Vec3* v : {&b.position, &b.linearVelocity, &b.angularVelocity, &b.boundsMin, &b.boundsMax}) *v = in.vec3();
+  for (std::int32_t* field : {&b.contacts, &b.treeLeaf, &b.treeParent}) *field = in.i32();
+  const std::uint8_t flags = in.u8();
+  if ((flags & ~(staticFlag | asleepFlag)) != 0) {
+    in.context("");
+    in.fail("frame " + std::to_string(frame) + ", bodies item " + std::to_string(item) + ": flags " +
+            std::to_string(flags) + " set bits other than 0 (static) and 1 (asleep)");
+  }
+  b.isStatic = (flags & staticFlag) != 0;
+  b.asleep = (flags & asleepFlag) != 0;
+}
+
 std::string encodeFrame(const RecordedFrame& recorded) {
   const Frame& f = recorded.frame;
   ByteWriter out;
@@ -338,7 +451,10 @@ std::string encodeFrame(const RecordedFrame& recorded) {
   writeView(out, recorded.view);
   auto list = [&](const auto& items, auto&& each) {
     out.u32(static_cast<std::uint32_t>(items.size()));
-    for (const auto& item : items) each(item);
+    for (const auto& item : items) {
+      each(item);
+      if constexpr (requires { item.tag; }) out.tag(item.tag);
+    }
   };
   list(f.boxes, [&](const SolidBox& b) { out.vec3(b.center), out.quat(b.orientation), out.vec3(b.halfExtents), out.color(b.color); });
   list(f.spheres, [&](const SolidSphere& s) { out.vec3(s.center), out.quat(s.orientation), out.f64(s.radius), out.color(s.color); });
@@ -351,29 +467,48 @@ std::string encodeFrame(const RecordedFrame& recorded) {
   list(f.points, [&](const Point& p) { out.vec3(p.position), out.f32(p.sizePixels), out.color(p.color); });
   list(f.arrows, [&](const Arrow& a) { out.vec3(a.from), out.vec3(a.to), out.color(a.color); });
   list(f.texts, [&](const Text& t) { out.f32(t.x), out.f32(t.y), out.f32(t.scale), out.text(t.text), out.color(t.color); });
+  list(f.labels, [&](const Label& l) { out.vec3(l.position), out.f32(l.scale), out.text(l.text), out.color(l.color); });
+  list(f.bodies, [&](const BodyInfo& b) { writeBody(out, b); });
   return out.bytes;
 }
 
-template <typename Item, typename Decode>
-void readList(ByteReader& in, const RecordedFrame& out, const char* list, std::size_t itemBytes,
-              std::vector<Item>& items, Decode&& decode) {
-  in.context("frame " + std::to_string(out.index) + ", " + list + ": ");
-  items.resize(in.count(itemBytes, maxListItems));
-  for (Item& item : items) decode(item);
-}
+// Reads one list of a frame: from version 2 on every primitive is followed by
+// its tag, which `itemBytes` (the version 1 size) does not include.
+class ListReader {
+ public:
+  ListReader(ByteReader& in, int frame, std::uint32_t version) : in_(in), frame_(frame), version_(version) {}
+  template <typename Item, typename Decode>
+  void operator()(const char* list, std::size_t itemBytes, std::vector<Item>& items, Decode&& decode) {
+    constexpr bool tagged = requires(Item item) { item.tag; };
+    const bool withTags = tagged && version_ >= 2;
+    in_.context("frame " + std::to_string(frame_) + ", " + list + ": ");
+    items.resize(in_.count(itemBytes + (withTags ? tagBytes : 0), maxListItems));
+    for (Item& item : items) {
+      decode(item);
+      if constexpr (tagged)
+        if (withTags) item.tag = in_.tag();
+    }
+  }
+
+ private:
+  ByteReader& in_;
+  int frame_;
+  std::uint32_t version_;
+};
 
 void decodeFrame(ByteReader& in, const std::map<std::uint64_t, std::shared_ptr<const TriangleMesh>>& meshes,
-                 RecordedFrame& out) {
+                 std::uint32_t version, RecordedFrame& out) {
   out.view = readView(in);
   Frame& f = out.frame;
   f.clear();
+  ListReader readList(in, out.index, version);
   // Exact item sizes (texts: without their characters) bound each count by the bytes left.
-  readList(in, out, "solid boxes", 96, f.boxes, [&](SolidBox& b) { b.center = in.vec3(), b.orientation = in.quat(), b.halfExtents = in.vec3(), b.color = in.color(); });
-  readList(in, out, "solid spheres", 80, f.spheres, [&](SolidSphere& s) { s.center = in.vec3(), s.orientation = in.quat(), s.radius = in.f64(), s.color = in.color(); });
-  readList(in, out, "capsules", 88, f.capsules, [&](SolidCapsule& c) {
+  readList("solid boxes", 96, f.boxes, [&](SolidBox& b) { b.center = in.vec3(), b.orientation = in.quat(), b.halfExtents = in.vec3(), b.color = in.color(); });
+  readList("solid spheres", 80, f.spheres, [&](SolidSphere& s) { s.center = in.vec3(), s.orientation = in.quat(), s.radius = in.f64(), s.color = in.color(); });
+  readList("capsules", 88, f.capsules, [&](SolidCapsule& c) {
     c.center = in.vec3(), c.orientation = in.quat(), c.radius = in.f64(), c.halfHeight = in.f64(), c.color = in.color();
   });
-  readList(in, out, "solid meshes", 80, f.meshes, [&](SolidMesh& m) {
+  readList("solid meshes", 80, f.meshes, [&](SolidMesh& m) {
     m.center = in.vec3(), m.orientation = in.quat();
     const std::uint64_t id = in.u64();
     const auto found = meshes.find(id);
@@ -381,11 +516,15 @@ void decodeFrame(ByteReader& in, const std::map<std::uint64_t, std::shared_ptr<c
     m.mesh = found->second;
     m.color = in.color();
   });
-  readList(in, out, "wire boxes", 96, f.wireBoxes, [&](WireBox& b) { b.center = in.vec3(), b.orientation = in.quat(), b.halfExtents = in.vec3(), b.color = in.color(); });
-  readList(in, out, "lines", 64, f.lines, [&](Line& l) { l.from = in.vec3(), l.to = in.vec3(), l.color = in.color(); });
-  readList(in, out, "points", 44, f.points, [&](Point& p) { p.position = in.vec3(), p.sizePixels = in.f32(), p.color = in.color(); });
-  readList(in, out, "arrows", 64, f.arrows, [&](Arrow& a) { a.from = in.vec3(), a.to = in.vec3(), a.color = in.color(); });
-  readList(in, out, "texts", 32, f.texts, [&](Text& t) { t.x = in.f32(), t.y = in.f32(), t.scale = in.f32(), t.text = in.text(), t.color = in.color(); });
+  readList("wire boxes", 96, f.wireBoxes, [&](WireBox& b) { b.center = in.vec3(), b.orientation = in.quat(), b.halfExtents = in.vec3(), b.color = in.color(); });
+  readList("lines", 64, f.lines, [&](Line& l) { l.from = in.vec3(), l.to = in.vec3(), l.color = in.color(); });
+  readList("points", 44, f.points, [&](Point& p) { p.position = in.vec3(), p.sizePixels = in.f32(), p.color = in.color(); });
+  readList("arrows", 64, f.arrows, [&](Arrow& a) { a.from = in.vec3(), a.to = in.vec3(), a.color = in.color(); });
+  readList("texts", 32, f.texts, [&](Text& t) { t.x = in.f32(), t.y = in.f32(), t.scale = in.f32(), t.text = in.text(), t.color = in.color(); });
+  if (version >= 2) {
+    readList("labels", labelBytes, f.labels, [&](Label& l) { l.position = in.vec3(), l.scale = in.f32(), l.text = in.text(), l.color = in.color(); });
+    readList("bodies", bodyBytes, f.bodies, [&](BodyInfo& b) { readBody(in, b, out.index, &b - f.bodies.data()); });
+  }
   in.context("");
   if (!in.done()) in.fail("frame " + std::to_string(out.index) + " has trailing bytes");
   if (const std::string problem = frameProblem(out); !problem.empty()) in.fail(problem);
@@ -462,10 +601,11 @@ void RecordingReader::readHeader() {
     throw std::invalid_argument("'" + name_ + "' is not a physdbg recording");
   offset_ = fileHeadBytes;
   const std::string versionBytes = header.substr(8);
-  const std::uint32_t version = ByteReader(versionBytes, name_).u32();
-  if (version == 0 || version > recordingVersion)
-    fail("version " + std::to_string(version) + " (this physdbg reads up to " + std::to_string(recordingVersion) +
-         ")");
+  version_ = ByteReader(versionBytes, name_).u32();
+  if (version_ == 0) fail("version 0 is not a recording version");
+  if (version_ > recordingVersion)
+    fail("version " + std::to_string(version_) + " is not one this physdbg reads (versions 1 to " +
+         std::to_string(recordingVersion) + "; a newer physdbg wrote it?)");
 }
 
 std::string RecordingReader::readBytes(std::uint64_t count) {
@@ -521,7 +661,7 @@ bool RecordingReader::readFrame(const ChunkHead& head, RecordedFrame& out, int f
   const std::string payload = readBytes(head.size - 4);
   ByteReader reader(payload, name_);
   out.index = frameIndex;
-  decodeFrame(reader, meshes_, out);
+  decodeFrame(reader, meshes_, version_, out);
   return true;
 }
 

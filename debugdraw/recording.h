@@ -1,10 +1,14 @@
 #pragma once
 // Recordings: the debug-draw primitive stream of a run, so frames can be
-// rendered later, elsewhere, or in pieces, without the engine. Format
-// (version 1, all numbers little-endian, documented in debugdraw/RECORDING.md):
+// rendered later, elsewhere, or in pieces, without the engine; with the tags,
+// labels and body state a viewer (replay) needs to choose layers, highlight,
+// label and follow bodies after the run. Format (version 2, all numbers
+// little-endian, documented in debugdraw/RECORDING.md):
 //   "PHYSDBGR" u32 version, then chunks: u32 tag, u64 payload bytes, payload.
 //   tag 1 mesh: written once before the first frame that uses it.
-//   tag 2 frame: u32 frame index (at most 2^31 - 1), the view, then each primitive list.
+//   tag 2 frame: u32 frame index (at most 2^31 - 1), the view, then each
+//   primitive list (every item followed by its Tag), labels, then bodies.
+// Version 1 files (no tags, labels or bodies) still read, with default tags.
 // Readers skip chunks with unknown tags, and frame payloads outside the
 // requested range without decoding them; every size is checked against the
 // bytes left in the file and against the limits below before it is allocated.
@@ -22,13 +26,13 @@
 
 namespace physdbg::debugdraw {
 
-inline constexpr std::uint32_t recordingVersion = 1;
+inline constexpr std::uint32_t recordingVersion = 2;  // what writers write; readers read 1 and 2
 
 // Limits (RECORDING.md, "Limits"). Recordings come from other people: a value
 // beyond these is corruption or hostile input, refused before anything is
 // allocated for it. Writers refuse to write what readers would refuse.
 inline constexpr std::uint64_t maxChunkBytes = std::uint64_t{1} << 30;  // 1 GiB
-inline constexpr std::uint32_t maxListItems = 1u << 24;                  // per primitive list
+inline constexpr std::uint32_t maxListItems = 1u << 24;                  // per list (bodies too)
 inline constexpr std::uint32_t maxMeshVertices = 1u << 24;
 inline constexpr std::uint32_t maxMeshIndices = 3u << 24;  // 16 Mi triangles
 // Positions and lengths in metres: 1e12 keeps every difference the renderer
@@ -79,6 +83,10 @@ class RecordingReader {
   // Throws std::invalid_argument naming the file (and the byte offset or the
   // frame) for a truncated or corrupt file or a value beyond the limits.
   bool next(RecordedFrame& out, int first = 0, int last = std::numeric_limits<int>::max());
+  // The file's format version (1 or 2). Version 1 primitives carry no tags
+  // (layer 0, no bodies) and frames no labels or bodies, so a viewer can say
+  // why layer or body selection cannot work on it.
+  std::uint32_t version() const { return version_; }
 
  private:
   struct ChunkHead {
@@ -99,6 +107,7 @@ class RecordingReader {
   std::unique_ptr<std::istream> stream_;
   std::uint64_t length_ = 0;  // learnt at open: every chunk size is checked against it
   std::uint64_t offset_ = 0;
+  std::uint32_t version_ = 0;
   std::map<std::uint64_t, std::shared_ptr<const TriangleMesh>> meshes_;
 };
 

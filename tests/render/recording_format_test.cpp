@@ -17,14 +17,17 @@
 #include <unistd.h>
 
 #include "debugdraw/recording.h"
+#include "recording_test_support.h"
 #include "render/text_geometry.h"
 
 // Bytes requested from operator new on this thread while counting, so the
 // hostile-input tests can bound what decoding a recording allocates.
-namespace {
+namespace physdbg::recordingtesting {
 thread_local bool countAllocations = false;
 thread_local std::size_t allocatedBytes = 0;
-}  // namespace
+}  // namespace physdbg::recordingtesting
+using physdbg::recordingtesting::allocatedBytes;
+using physdbg::recordingtesting::countAllocations;
 
 // Sanitizer builds keep their own allocator: replacing two of the many global
 // allocation functions there pairs a library's nothrow new with our free()
@@ -58,12 +61,7 @@ PHYSDBG_WHOLE_FUNCTION void operator delete(void* memory, std::size_t) noexcept 
 
 namespace {
 
-namespace dd = physdbg::debugdraw;
-namespace fs = std::filesystem;
-
-std::string tempPath(const std::string& name) {
-  return (fs::temp_directory_path() / ("physdbg-recording-" + std::to_string(::getpid()) + "-" + name)).string();
-}
+using namespace physdbg::recordingtesting;
 
 dd::Color randomColor(std::mt19937& random) {
   std::uniform_real_distribution<float> unit(0, 1);
@@ -261,84 +259,12 @@ TEST(Recording, WriterRefusesMeshlessMeshesAndNegativeIndices) {
 
 static_assert(std::endian::native == std::endian::little, "the byte patches below assume a little-endian host");
 
-// Counts the bytes this thread allocates while it lives.
-class AllocationCount {
- public:
-  AllocationCount() {
-    allocatedBytes = 0;
-    countAllocations = true;
-  }
-  ~AllocationCount() { countAllocations = false; }
-  AllocationCount(const AllocationCount&) = delete;
-  AllocationCount& operator=(const AllocationCount&) = delete;
-  std::size_t bytes() const { return allocatedBytes; }
-};
-
-struct Decoded {
-  std::size_t frames = 0;
-  bool refused = false;  // with std::invalid_argument; anything else fails the test
-  std::string message;
-  std::size_t allocated = 0;
-};
-
-Decoded decodeBytes(std::string bytes, const std::string& name = "hostile.rec") {
-  Decoded decoded;
-  const AllocationCount count;
-  try {
-    decoded.frames = dd::readRecordingBytes(std::move(bytes), name).size();
-  } catch (const std::invalid_argument& error) {
-    decoded.refused = true;
-    decoded.message = error.what();
-  }
-  decoded.allocated = count.bytes();
-  return decoded;
-}
-
 // What decoding may allocate: a few times the input (payloads, decoded items,
 // the returned copies) plus small fixed costs.
 std::size_t allocationBound(std::size_t fileBytes) { return 5 * fileBytes + 16 * 1024; }
 
-std::string fileBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
-std::string recordingBytes(const std::vector<dd::RecordedFrame>& frames) {
-  const std::string path = tempPath("bytes");
-  dd::RecordingWriter writer(path);
-  for (const dd::RecordedFrame& frame : frames) writer.write(frame);
-  writer.close();
-  std::string bytes = fileBytes(path);
-  fs::remove(path);
-  return bytes;
-}
-
-template <typename Number>
-std::string bitsOf(Number value) {
-  std::string bits(sizeof value, '\0');
-  std::memcpy(bits.data(), &value, sizeof value);
-  return bits;
-}
-
-template <typename Number>
-Number numberAt(const std::string& bytes, std::size_t at) {
-  Number value;
-  std::memcpy(&value, bytes.data() + at, sizeof value);
-  return value;
-}
-
-template <typename Number>
-void putNumber(std::string& bytes, std::size_t at, Number value) {
-  bytes.replace(at, sizeof value, bitsOf(value));
-}
-
+// A version 1 file head: these tests build chunks by hand, and version 1 is still read.
 std::string fileHead() { return std::string("PHYSDBGR\x01\0\0\0", 12); }
-
-std::string chunkHead(std::uint32_t tag, std::uint64_t size) { return bitsOf(tag) + bitsOf(size); }
-
-void expectMentions(const std::string& message, std::initializer_list<std::string> parts) {
-  for (const std::string& part : parts) EXPECT_NE(message.find(part), std::string::npos) << message;
-}
 
 TEST(RecordingHostile, OversizeChunkIsRefusedBeforeAllocating) {
   // 24 bytes declaring a 16 GiB chunk, as a frame, as a skipped frame and under an unknown tag.
@@ -433,12 +359,16 @@ TEST(RecordingHostile, RandomByteFlipsAreDecodedOrRefusedWithinAnAllocationBound
   EXPECT_GT(decoded, 100);
 }
 
+// What follows the characters of the last text of a frame without labels or
+// bodies: its colour, its tag, and the empty label and body counts.
+constexpr std::size_t afterLastText = 16 + 24 + 4 + 4;
+
 // Grows the last text (of `length` characters) of a one-frame, mesh-free
 // recording by `extra`, keeping its length field and the chunk size consistent.
 std::string growLastText(std::string bytes, std::size_t length, const std::string& extra) {
-  const std::size_t lengthAt = bytes.size() - 16 - length - 4;  // before the characters and the colour
+  const std::size_t lengthAt = bytes.size() - afterLastText - length - 4;
   putNumber(bytes, lengthAt, static_cast<std::uint32_t>(numberAt<std::uint32_t>(bytes, lengthAt) + extra.size()));
-  bytes.insert(bytes.size() - 16, extra);
+  bytes.insert(bytes.size() - afterLastText, extra);
   putNumber(bytes, 16, numberAt<std::uint64_t>(bytes, 16) + extra.size());
   return bytes;
 }
@@ -470,11 +400,11 @@ TEST(RecordingHostile, OverLongTextsAreRefusedByWriterAndReader) {
   const std::string atLimit = recordingBytes({frameWithTexts(full)});
   ASSERT_EQ(decodeBytes(atLimit).frames, 1u);
   decoded = decodeBytes(growLastText(atLimit, 0, "b"), "frame.rec");
-  expectMentions(decoded.message, {"'frame.rec'", "frame 4, 16385 characters of text, over the limit of 16384 per frame"});
+  expectMentions(decoded.message, {"'frame.rec'", "frame 4, 16385 characters of text in texts and labels, over the limit of 16384 per frame"});
 
   // A declared length of 4 Gi characters is refused before it is allocated.
   std::string huge = recordingBytes({frameWithTexts({0})});
-  putNumber(huge, huge.size() - 20, std::uint32_t{0xffffffff});
+  putNumber(huge, huge.size() - afterLastText - 4, std::uint32_t{0xffffffff});
   decoded = decodeBytes(huge);
   expectMentions(decoded.message, {"a text of 4294967295 characters"});
   EXPECT_LT(decoded.allocated, 64u * 1024u);
