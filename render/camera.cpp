@@ -73,6 +73,7 @@ Bounds frameBounds(const debugdraw::Frame& frame) {
     bounds.extend(arrow.from);
     bounds.extend(arrow.to);
   }
+  for (const auto& label : frame.labels) bounds.extend(label.position);
   return bounds;
 }
 

@@ -18,7 +18,9 @@ struct Bounds {
   void extend(const Bounds& other);
 };
 
-// Bounds of every 3D primitive (text is screen-space and excluded).
+// Bounds of every 3D primitive and label anchor (text is screen-space and
+// excluded): the depth range then encloses the labels, so one in front of the
+// eye is never cut by the near plane.
 // Throws std::invalid_argument for a solid mesh without a mesh.
 Bounds frameBounds(const debugdraw::Frame& frame);
 

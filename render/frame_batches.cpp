@@ -204,6 +204,49 @@ void addOverlays(const debugdraw::Frame& frame, const Vector3d& origin, const Sc
     copy(vertex.color, point.color);
     batches.points.push_back(vertex);
   }
+}
+
+// Characters of texts and labels together: one budget, as a recording counts it.
+void requireTextBudget(const debugdraw::Frame& frame) {
+  std::size_t characters = 0;
+  for (const auto& text : frame.texts) characters += text.text.size();
+  for (const auto& label : frame.labels) characters += label.text.size();
+  if (characters > debugdraw::maxFrameTextCharacters)
+    throw std::invalid_argument("debug draw: " + std::to_string(characters) +
+                                " characters of texts and labels, over the frame's limit of " +
+                                std::to_string(debugdraw::maxFrameTextCharacters));
+}
+
+// Pixel position of a point relative to the origin; none when it lies outside
+// the view's sides or nearer than its near plane (so behind a perspective eye).
+std::optional<Eigen::Vector2d> pixelOf(const ScreenMapping& screen, const Vector3d& relative) {
+  const Eigen::Vector4d clip = screen.viewProjection * relative.homogeneous();
+  if (!(clip.w() > 0) || !(clip.z() >= -clip.w())) return std::nullopt;
+  const Eigen::Vector2d ndc = clip.head<2>() / clip.w();
+  if (!(ndc.cwiseAbs().maxCoeff() <= 1)) return std::nullopt;
+  return Eigen::Vector2d((ndc.x() + 1) * 0.5 * screen.width, (1 - ndc.y()) * 0.5 * screen.height);
+}
+
+// Labels in view, as screen-space text; every label is validated, seen or not.
+std::vector<debugdraw::Text> placedLabels(const debugdraw::Frame& frame, const Vector3d& origin,
+                                          const ScreenMapping* screen) {
+  std::vector<debugdraw::Text> placed;
+  for (const auto& label : frame.labels) {
+    validateLabel(label);
+    if (!screen) continue;
+    if (const auto anchor = pixelOf(*screen, label.position - origin)) placed.push_back(labelText(label, *anchor));
+  }
+  return placed;
+}
+
+// Labels first, so the screen's own text (the overlay) stays on top of them;
+// within each, all outlines before any glyph.
+void addTexts(const debugdraw::Frame& frame, const Vector3d& origin, const ScreenMapping* screen,
+              FrameBatches& batches) {
+  requireTextBudget(frame);
+  const std::vector<debugdraw::Text> labels = placedLabels(frame, origin, screen);
+  for (const auto& label : labels) appendTextOutline(label, batches.texts);
+  for (const auto& label : labels) appendText(label, batches.texts);
   for (const auto& text : frame.texts) appendTextOutline(text, batches.texts);
   for (const auto& text : frame.texts) appendText(text, batches.texts);
 }
@@ -216,6 +259,7 @@ FrameBatches buildFrameBatches(const debugdraw::Frame& frame, const Vector3d& or
   addSolids(frame, origin, batches);
   addMeshes(frame, origin, batches);
   addOverlays(frame, origin, screen, batches);
+  addTexts(frame, origin, screen, batches);
   return batches;
 }
 

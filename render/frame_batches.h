@@ -51,7 +51,7 @@ struct FrameBatches {
   std::vector<ColoredVertex> lines;        // pairs
   std::vector<ColoredVertex> arrowShafts;  // pairs
   std::vector<PointVertex> points;
-  std::vector<TextVertex> texts;  // triangles: outlines first, then glyphs
+  std::vector<TextVertex> texts;  // triangles: labels' outlines, their glyphs, then the same for texts
 };
 
 // Where positions relative to the origin land in the image. Given one,
@@ -65,8 +65,11 @@ struct ScreenMapping {
 inline constexpr double kMinimumArrowPixels = 12;
 inline constexpr double kMinimumArrowHeadPixels = 5;
 
-// Throws std::invalid_argument for non-finite positions, negative sizes, a
-// zero quaternion, a solid mesh without mesh, or a non-positive text scale.
+// Labels become screen-space text placed over their projected anchors; those
+// outside the view or behind the eye, and all of them without a screen, draw
+// nothing. Throws std::invalid_argument for non-finite positions, negative
+// sizes, a zero quaternion, a solid mesh without mesh, a non-positive text or
+// label scale, or more than maxFrameTextCharacters in texts and labels together.
 FrameBatches buildFrameBatches(const debugdraw::Frame& frame, const Eigen::Vector3d& origin,
                                const ScreenMapping* screen = nullptr);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <stb/stb_easy_font.h>
 
@@ -13,6 +14,8 @@ constexpr debugdraw::Color kOutlineColor{0.0f, 0.0f, 0.0f, 0.85f};
 constexpr std::size_t kMaxQuadsPerCharacter = 11;  // stb_easy_font's busiest glyph
 constexpr std::size_t kVerticesPerQuad = 6;
 constexpr std::size_t kPassesPerText = 9;  // eight outline offsets and the glyphs
+constexpr float kLineHeight = 12;  // stb_easy_font's line pitch, in font units
+constexpr float kBaseline = 7;     // bottom of a capital on the first line
 
 struct Quad {
   float x0, y0, x1, y1;  // font units, y down
@@ -67,7 +70,28 @@ void appendQuads(const debugdraw::Text& text, float offsetX, float offsetY, cons
   }
 }
 
+// Right edge of the glyphs, in font units: what a label is centred by.
+float inkWidth(const std::string& text) {
+  float width = 0;
+  for (const Quad& quad : glyphQuads(text)) width = std::max(width, quad.x1);
+  return width;
+}
+
 }  // namespace
+
+void validateLabel(const debugdraw::Label& label) {
+  if (!label.position.allFinite()) throw std::invalid_argument("debug draw: label position is not finite");
+  validate(debugdraw::Text{0, 0, label.scale, label.text, label.color, label.tag});
+}
+
+debugdraw::Text labelText(const debugdraw::Label& label, const Eigen::Vector2d& anchor) {
+  validateLabel(label);
+  const auto lines = static_cast<float>(std::count(label.text.begin(), label.text.end(), '\n'));
+  const float baseline = (lines * kLineHeight + kBaseline) * label.scale;
+  const float x = static_cast<float>(anchor.x()) - 0.5f * inkWidth(label.text) * label.scale;
+  const float y = static_cast<float>(anchor.y()) - kLabelGapPixels - baseline;
+  return debugdraw::Text{x, y, label.scale, label.text, label.color, label.tag};
+}
 
 std::size_t maxTextVertices() {
   return debugdraw::maxFrameTextCharacters * kMaxQuadsPerCharacter * kVerticesPerQuad * kPassesPerText;

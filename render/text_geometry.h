@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "debugdraw/primitives.h"
 #include "render/frame_batches.h"
 
@@ -23,6 +25,17 @@ void appendText(const debugdraw::Text& text, std::vector<TextVertex>& triangles)
 // A dark outline (the glyphs offset one step in eight directions) so text reads
 // on light and dark backgrounds alike. Draw it before the glyphs. Same checks.
 void appendTextOutline(const debugdraw::Text& text, std::vector<TextVertex>& triangles);
+
+// A world-anchored label's text: centred horizontally on `anchor` (pixels from
+// the top-left corner, where the renderer projected the label's position), its
+// last baseline kLabelGapPixels above it, so the text sits just over what it names.
+inline constexpr float kLabelGapPixels = 4;
+debugdraw::Text labelText(const debugdraw::Label& label, const Eigen::Vector2d& anchor);
+
+// Throws std::invalid_argument for what appendText would refuse in the label's
+// text (scale, length) or a non-finite position. Checked whether or not the
+// label is in view, so a frame is refused the same way from every camera.
+void validateLabel(const debugdraw::Label& label);
 
 // The most vertices `triangles` may hold: maxFrameTextCharacters of the
 // largest glyph (11 quads), drawn once and outlined eight times.
