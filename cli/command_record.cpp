@@ -30,13 +30,14 @@ int runRecord(const std::vector<std::string>& args) {
   CommandSpec spec{
       "record",
       "SCENE -o FILE [--frames N|A:B] [--size WxH] [--layers LIST] [--steps-per-frame K] [camera options]",
-      "Simulates SCENE and writes the debug-draw primitives and the view of every frame to FILE (format:\n"
-      "debugdraw/RECORDING.md). 'physdbg replay FILE' renders it later; --size sets the aspect the camera\n"
-      "frames for.",
+      "Simulates SCENE and writes the debug-draw primitives of every layer, each body's state and the view\n"
+      "of every frame to FILE (format: debugdraw/RECORDING.md). 'physdbg replay FILE' renders it later,\n"
+      "showing --layers unless told otherwise, and can choose other layers, --highlight, --labels and the\n"
+      "camera then. --size sets the aspect the camera frames for.",
       {{"--output", "-o", "FILE", "recording to write (required)"}},
       1,
       1};
-  for (const OptionSpec& option : viewOptionSpecs()) spec.options.push_back(option);
+  for (const OptionSpec& option : recordViewOptionSpecs()) spec.options.push_back(option);
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   if (!parsed->has("--output")) throw UsageError("-o FILE is required");
@@ -50,7 +51,7 @@ int runRecord(const std::vector<std::string>& args) {
   } catch (const std::runtime_error& error) {
     throw UsageError(std::string("-o: ") + error.what());
   }
-  SceneFrames frames(scene, options);
+  SceneFrames frames(scene, options, FramePurpose::Record);
   ProgressBar progress("record " + scene.name, options.frames.count());
   for (int index = options.frames.first; index < options.frames.last; ++index) {
     writer->write(frames.frame(index));

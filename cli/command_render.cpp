@@ -111,7 +111,7 @@ int runRender(const std::vector<std::string>& args) {
   removeEarlierFrames(outputDirectory, options.frames);
 
   SceneFrames frames(scene, options);
-  render::Renderer renderer({options.width, options.height, 0, readBackend(*parsed)});
+  render::Renderer renderer({options.width, options.height, options.samples, readBackend(*parsed)});
   const PoolSize pool = framePoolSize(options.width, options.height);
   PngWriterPool writers(pool, "-o");
   ProgressBar progress("render " + scene.name, options.frames.count());
@@ -141,6 +141,7 @@ int runRender(const std::vector<std::string>& args) {
     std::printf("wrote video %s\n", video.c_str());
   }
   reportBlankLayers("render", options, frames.layerCounts());
+  reportLabelsLeftOut("render", frames.labelsLeftOut());
   return reportNumericalFaults("render", frames.world());
 }
 

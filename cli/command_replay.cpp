@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cstdio>
 #include <limits>
+#include <optional>
+#include <stdexcept>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/output_folder.h"
 #include "cli/png_writer_pool.h"
+#include "cli/scene_camera.h"
 #include "cli/scene_frames.h"
 #include "cli/view_options.h"
 #include "debugdraw/recording.h"
@@ -41,41 +44,133 @@ void checkSomethingReplayed(int written, const std::string& path, const Argument
   throw UsageError(holds);
 }
 
+// The viewer's choices for a recording: none given keeps each frame as recorded.
+struct ReplayView {
+  std::optional<debugdraw::LayerSet> layers;  // --layers; else the layers the recording run showed
+  ViewOptions options;                        // focus, tree depth, camera, size
+  bool changesFrames() const {
+    return layers || !options.highlight.empty() || options.labels || options.camera.any() ||
+           options.treeMinDepth > 0 || options.treeMaxDepth < (1 << 30);
+  }
+};
+
+ReplayView readReplayView(const Arguments& arguments) {
+  ReplayView view;
+  ViewOptions& options = view.options;
+  std::tie(options.width, options.height) = parseSize(arguments.value("--size", "1280x720"), "--size");
+  if (arguments.has("--layers")) view.layers = readLayerList(arguments.value("--layers"), "--layers");
+  options.layers = view.layers.value_or(allLayerSet());
+  readTreeDepth(arguments, options, view.layers ? "--layers" : "the recording");
+  options.camera = readCameraOptions(arguments);
+  options.highlight = readHighlight(arguments);
+  options.labels = arguments.has("--labels");
+  options.samples = readSamples(arguments);
+  return view;
+}
+
+// Version 1 primitives carry no layer or body: nothing to choose from.
+void checkTagged(const debugdraw::RecordingReader& reader, const ReplayView& view, const std::string& path) {
+  if (reader.version() >= 2 || !view.changesFrames()) return;
+  throw UsageError("'" + path + "' is a version " + std::to_string(reader.version()) +
+                   " recording: its primitives carry no layer or body tags, so --layers, --tree-depth, "
+                   "--highlight, --labels and the camera options need it recorded again with this physdbg");
+}
+
+// Draws recorded frames with the viewer's choices, as `render` would have
+// drawn them with the same options (the same selection, the same camera rule).
+class ReplayViewer {
+ public:
+  ReplayViewer(const ReplayView& view, std::uint32_t version) : view_(view), tagged_(version >= 2) {}
+
+  // Version 2 frames hold every layer: the selection picks what is shown.
+  debugdraw::RecordedFrame show(const debugdraw::RecordedFrame& recorded) {
+    if (!tagged_) return recorded;
+    debugdraw::ViewSelection selection = selectionOf(view_.options);
+    selection.layers = view_.layers.value_or(recorded.shownLayers);
+    debugdraw::RecordedFrame shown;
+    shown.index = recorded.index;
+    try {
+      debugdraw::ViewReport report;
+      shown.frame = debugdraw::selectView(recorded.frame, selection, &report);
+      labelsLeftOut_ = std::max(labelsLeftOut_, report.labelsLeftOut);
+    } catch (const std::invalid_argument& error) {
+      throw UsageError("frame " + std::to_string(recorded.index) + ": " + error.what());
+    }
+    shown.view = toView(camera(recorded));
+    return shown;
+  }
+  int labelsLeftOut() const { return labelsLeftOut_; }
+
+ private:
+  const debugdraw::BodyInfo* followed(const debugdraw::RecordedFrame& recorded) const {
+    if (!view_.options.camera.follow) return nullptr;
+    for (const debugdraw::BodyInfo& body : recorded.frame.bodies)
+      if (body.index == *view_.options.camera.follow) return &body;
+    throw UsageError("--follow: frame " + std::to_string(recorded.index) + " has no body " +
+                     std::to_string(*view_.options.camera.follow) + " (it has " +
+                     std::to_string(recorded.frame.bodies.size()) + ")");
+  }
+
+  render::Camera camera(const debugdraw::RecordedFrame& recorded) {
+    if (!view_.options.camera.any()) return toCamera(recorded.view);
+    const debugdraw::BodyInfo* body = followed(recorded);
+    if (!initialCamera_) {
+      const double aspect = static_cast<double>(view_.options.width) / view_.options.height;
+      initialCamera_ = applyCameraOptions(toCamera(recorded.view), view_.options.camera, body, aspect);
+    }
+    return body ? followBody(*initialCamera_, *body) : *initialCamera_;
+  }
+
+  ReplayView view_;
+  bool tagged_;
+  std::optional<render::Camera> initialCamera_;
+  int labelsLeftOut_ = 0;
+};
+
 }  // namespace
 
 int runReplay(const std::vector<std::string>& args) {
-  const CommandSpec spec{
+  CommandSpec spec{
       "replay",
-      "FILE -o DIR [--frames N|A:B] [--size WxH] [--backend osmesa|egl]",
+      "FILE -o DIR [--frames N|A:B] [--size WxH] [--layers LIST] [--highlight A,B] [--labels] [camera options]\n"
+      "       [--backend osmesa|egl]",
       "Renders the frames of a recording made by 'physdbg record' to DIR/frame_NNNNN.png, numbered as\n"
-      "recorded. With --frames A:B only recorded frames A..B-1 are decoded and drawn.",
+      "recorded. With --frames A:B only recorded frames A..B-1 are decoded and drawn. With no view option\n"
+      "each frame is drawn as the recording run showed it; --layers, --tree-depth, --highlight, --labels and\n"
+      "the camera options draw it as 'physdbg render' would have with them.",
       {{"--output", "-o", "DIR", "output folder (required)"},
        {"--frames", "", "N|A:B", "frames 0..N-1 or A..B-1 (default all)"},
-       {"--size", "", "WxH", "image size in pixels (default 1280x720)"},
-       backendOptionSpec()},
+       {"--size", "", "WxH", "image size in pixels (default 1280x720)"}},
       1,
       1};
+  for (const OptionSpec& option : replayViewOptionSpecs()) spec.options.push_back(option);
+  spec.options.push_back(backendOptionSpec());
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   if (!parsed->has("--output")) throw UsageError("-o DIR is required");
   FrameRange range{0, std::numeric_limits<int>::max()};
   if (parsed->has("--frames")) range = parseFrameRange(parsed->value("--frames"), "--frames");
-  const auto [width, height] = parseSize(parsed->value("--size", "1280x720"), "--size");
+  const ReplayView view = readReplayView(*parsed);
+  const int width = view.options.width, height = view.options.height;
   debugdraw::RecordingReader reader(parsed->positional()[0]);
+  checkTagged(reader, view, parsed->positional()[0]);
+  ReplayViewer viewer(view, reader.version());
   const std::string directory = parsed->value("--output");
   prepareOutputDirectory(directory);
 
-  render::Renderer renderer({width, height, 0, readBackend(*parsed)});
+  render::Renderer renderer({width, height, view.options.samples, readBackend(*parsed)});
   PngWriterPool writers(framePoolSize(width, height), "-o");
   debugdraw::RecordedFrame frame;
   int written = 0;
   while (reader.next(frame, range.first, range.last)) {
-    writers.submit(framePath(directory, frame.index), renderer.render(frame.frame, toCamera(frame.view)));
+    const debugdraw::RecordedFrame shown = viewer.show(frame);
+    writers.submit(framePath(directory, frame.index), renderer.render(shown.frame, toCamera(shown.view)));
     ++written;
   }
   writers.finish();
   checkSomethingReplayed(written, parsed->positional()[0], *parsed);
   std::printf("replayed %d frames to %s\n", written, directory.c_str());
+  reportLabelsLeftOut("replay", viewer.labelsLeftOut());
   return 0;
 }
 

@@ -5,6 +5,7 @@
 
 #include "cli/scene_camera.h"
 #include "cli/scene_overlay.h"
+#include "debugdraw/frame_view.h"
 
 namespace physdbg::cli {
 
@@ -24,14 +25,32 @@ render::Camera sceneCamera(const SceneDescription& scene, double aspect) {
 
 debugdraw::Frame sceneFrame(const SceneDescription& scene, const World& world, debugdraw::LayerSet layers,
                             int imageWidth) {
+  debugdraw::ViewSelection selection;
+  selection.layers = layers;
+  selection.imageWidth = imageWidth;
   debugdraw::Frame frame;
-  world.emitDebugDraw(layers, frame);
+  world.emitDebugDraw(debugdraw::layersNeeded(selection), frame);
+  world.emitBodies(frame);
   if (layers.has(debugdraw::Layer::Overlay)) {
     OverlayCounters counters;
     counters.imageWidth = imageWidth;
+    const debugdraw::FrameMark mark = debugdraw::markOf(frame);
     addOverlay(scene, world, counters, frame);
+    debugdraw::fillTagsSince(frame, mark, debugdraw::tagOf(debugdraw::Layer::Overlay));
   }
-  return frame;
+  return debugdraw::selectView(frame, selection);
+}
+
+render::Image renderViewFrame(render::Renderer& renderer, const SceneDescription& scene, int frameIndex,
+                              ViewOptions options) {
+  options.frames = {frameIndex, frameIndex + 1, false};
+  options.runFrames = frameIndex + 1;
+  options.width = renderer.options().width;
+  options.height = renderer.options().height;
+  options.timing = false;
+  SceneFrames frames(scene, options);
+  const debugdraw::RecordedFrame frame = frames.frame(frameIndex);
+  return renderer.render(frame.frame, toCamera(frame.view));
 }
 
 render::Image renderSceneFrame(render::Renderer& renderer, const SceneDescription& scene, int steps,

@@ -3,6 +3,7 @@
 // debug layers (with an overlay free of wall-clock values) and render them.
 // Shared by golden-image tests and their update tool; the pieces are separate
 // so tests can perturb the world or the frame before drawing.
+#include "cli/scene_frames.h"
 #include "debugdraw/primitives.h"
 #include "render/camera.h"
 #include "render/image.h"
@@ -17,10 +18,16 @@ World simulateScene(const SceneDescription& scene, int steps);
 // The camera `render` uses: framed on the scene's initial shapes.
 render::Camera sceneCamera(const SceneDescription& scene, double aspect);
 
-// The world's primitives for `layers`; the overlay (when asked for) names the
-// scene, step, simulated time and body count.
+// The world's primitives for `layers`, through the viewer's selection as
+// `render` draws them; the overlay (when asked for) names the scene, step,
+// simulated time and body count.
 debugdraw::Frame sceneFrame(const SceneDescription& scene, const World& world, debugdraw::LayerSet layers,
                             int imageWidth = 320);
+
+// Frame `frameIndex` exactly as `physdbg render` draws it with `options`
+// (frames, size and timing are set here: the renderer's size, no timing).
+render::Image renderViewFrame(render::Renderer& renderer, const SceneDescription& scene, int frameIndex,
+                              ViewOptions options);
 
 // All of the above at the renderer's size.
 render::Image renderSceneFrame(render::Renderer& renderer, const SceneDescription& scene, int steps,

@@ -18,5 +18,7 @@ inline constexpr int maxImageSide = 16384;
 inline constexpr long long maxImagePixels = 8192LL * 8192;
 // tree --max-events: each event writes two images.
 inline constexpr int maxTreeEvents = 10'000;
+// Bodies --highlight takes: each gets an overlay line, so a screenful.
+inline constexpr int maxHighlighted = 16;
 
 }  // namespace physdbg::cli::limits

@@ -4,14 +4,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
+#include <limits>
+#include <utility>
 #include <stdexcept>
 
 #include "cli/arguments.h"
 #include "cli/scene_camera.h"
 #include "cli/scene_overlay.h"
-#include "engine/broadphase/dynamic_aabb_tree.h"
-#include "engine/broadphase/tree_debug_draw.h"
+#include "debugdraw/frame_view.h"
+#include "debugdraw/ground_grid.h"
 
 namespace physdbg::cli {
 namespace {
@@ -21,17 +22,43 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// A view of the body from a few of its sizes away, so it fills about a third of the picture.
-render::Camera followCamera(const RigidBody& body, double aspect) {
-  const Aabb box = body.collider().worldBounds(body.transform());
-  const Vec3 half = box.halfExtents().cwiseMax(Vec3::Constant(0.5)) * 3.0;
-  render::Bounds bounds;
-  bounds.extend(box.center() - half);
-  bounds.extend(box.center() + half);
-  return render::frameBoundsCamera(bounds, aspect);
+// Bounds for the ground grid: the scene's footprint, with the bottom raised to
+// the ground the moving bodies start above (the top of the highest static body
+// entirely below them), so a floor slab does not hide the grid; a hair above
+// it, so the lines do not fight the floor's face for depth.
+std::pair<Vec3, Vec3> groundGridBounds(const std::vector<dd::BodyInfo>& bodies, const Vec3& up) {
+  int axis = 0;
+  up.cwiseAbs().maxCoeff(&axis);
+  const double sign = up[axis] < 0 ? -1.0 : 1.0;
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  double movingBottom = std::numeric_limits<double>::infinity();
+  for (const dd::BodyInfo& body : bodies) {
+    if (!body.boundsMin.allFinite() || !body.boundsMax.allFinite()) continue;
+    low = low.cwiseMin(body.boundsMin);
+    high = high.cwiseMax(body.boundsMax);
+    if (!body.isStatic) movingBottom = std::min(movingBottom, sign > 0 ? body.boundsMin[axis] : -body.boundsMax[axis]);
+  }
+  if (!low.allFinite()) return {Vec3::Zero(), Vec3::Zero()};
+  double ground = sign > 0 ? low[axis] : -high[axis];
+  for (const dd::BodyInfo& body : bodies) {
+    const double top = sign > 0 ? body.boundsMax[axis] : -body.boundsMin[axis];
+    if (body.isStatic && std::isfinite(top) && top <= movingBottom + 1e-9) ground = std::max(ground, top);
+  }
+  ground += 1e-3 * (high - low).norm();
+  if (sign > 0) low[axis] = std::min(ground, high[axis]);
+  else high[axis] = std::max(-ground, low[axis]);
+  return {low, high};
 }
 
 }  // namespace
+
+void reportLabelsLeftOut(const std::string& command, int leftOut) {
+  if (leftOut > 0)
+    std::fprintf(stderr,
+                 "physdbg %s: --labels: %d bodies left unlabelled in some frames (the text of a frame is limited to "
+                 "%zu characters); --highlight the ones you need, they are labelled first\n",
+                 command.c_str(), leftOut, dd::maxFrameTextCharacters);
+}
 
 render::Camera toCamera(const dd::View& view) {
   render::Camera camera;
@@ -48,9 +75,32 @@ dd::View toView(const render::Camera& camera) {
   return {camera.eye, camera.target, camera.up, camera.fovYDegrees, camera.orthographic, camera.orthoHeight};
 }
 
-SceneFrames::SceneFrames(const SceneDescription& scene, const ViewOptions& options)
-    : scene_(scene), options_(options), world_(buildWorld(scene)) {
+dd::LayerSet allLayerSet() {
+  dd::LayerSet all;
+  for (const auto& [name, layer] : dd::allLayers()) all.add(layer);
+  return all;
+}
+
+SceneFrames::SceneFrames(const SceneDescription& scene, const ViewOptions& options, FramePurpose purpose)
+    : scene_(scene),
+      options_(options),
+      purpose_(purpose),
+      selection_(selectionOf(options)),
+      emitted_(purpose == FramePurpose::Record ? allLayerSet() : dd::layersNeeded(selection_)),
+      world_(buildWorld(scene)) {
   world_.keepContactHistory(true);
+  dd::Frame framing;
+  world_.emitDebugDraw(dd::parseLayers("shapes"), framing);
+  const double aspect = static_cast<double>(options_.width) / options_.height;
+  dd::Frame bodies;
+  if (options_.camera.follow) world_.emitBodies(bodies);
+  const dd::BodyInfo* followed = options_.camera.follow ? &bodies.bodies.at(*options_.camera.follow) : nullptr;
+  initialCamera_ = applyCameraOptions(chooseCamera(scene_, framing, aspect), options_.camera, followed, aspect);
+  if (emitted_.has(dd::Layer::Grid)) {
+    if (bodies.bodies.empty()) world_.emitBodies(bodies);
+    const auto [low, high] = groundGridBounds(bodies.bodies, initialCamera_.up);
+    dd::emitGroundGrid(low, high, initialCamera_.up, grid_);
+  }
 }
 
 // Each frame shows the contacts of every step since the previous frame (a
@@ -69,66 +119,61 @@ void SceneFrames::advanceTo(int index) {
   }
 }
 
-render::Camera SceneFrames::camera() {
-  const double aspect = static_cast<double>(options_.width) / options_.height;
-  if (!initialCamera_) {
-    dd::Frame framing;
-    world_.emitDebugDraw(dd::parseLayers("shapes"), framing);
-    render::Camera camera = options_.follow ? followCamera(world_.body(*options_.follow), aspect)
-                                            : chooseCamera(scene_, framing, aspect);
-    const Vec3 offset = camera.eye - camera.target;
-    if (options_.target) camera.target = *options_.target;
-    camera.eye = options_.eye ? *options_.eye : camera.target + offset;
-    if (options_.fovYDegrees) camera.fovYDegrees = *options_.fovYDegrees;
-    if (options_.orthographic) {
-      camera.orthographic = true;
-      // Same visible height at the target as the perspective view had.
-      camera.orthoHeight = 2.0 * (camera.eye - camera.target).norm() * std::tan(camera.fovYDegrees * std::numbers::pi / 360.0);
-    }
-    if (std::abs((camera.target - camera.eye).normalized().dot(camera.up)) > 0.999) camera.up = Vec3::UnitZ();
-    try {
-      render::validateCamera(camera);
-    } catch (const std::invalid_argument& error) {
-      throw UsageError(std::string("camera: ") + error.what());
-    }
-    initialCamera_ = camera;
-  }
-  render::Camera camera = *initialCamera_;
-  if (options_.follow) {
-    const Vec3 position = world_.body(*options_.follow).position();
-    if (position.allFinite()) {
-      camera.eye += position - camera.target;
-      camera.target = position;
-    }
-  }
-  return camera;
+render::Camera SceneFrames::camera(const dd::Frame& tagged) const {
+  if (!options_.camera.follow) return initialCamera_;
+  for (const dd::BodyInfo& body : tagged.bodies)
+    if (body.index == *options_.camera.follow) return followBody(initialCamera_, body);
+  return initialCamera_;
 }
 
-// The engine's layers, and the tree limited to --tree-depth drawn here.
 void SceneFrames::drawLayers(dd::Frame& out) {
-  dd::LayerSet layers = options_.layers;
-  const bool limitTree = layers.has(dd::Layer::Tree) && (options_.treeMinDepth > 0 || options_.treeMaxDepth < (1 << 30));
-  if (limitTree) layers.bits &= ~static_cast<std::uint32_t>(dd::Layer::Tree);
-  world_.emitDebugDraw(layers, out, &layerCounts_);
-  if (limitTree && world_.tree()) {
-    TreeDrawOptions tree;
-    tree.leaves = false;
-    tree.minDepth = options_.treeMinDepth;
-    tree.maxDepth = options_.treeMaxDepth;
-    const std::size_t before = out.primitiveCount();
-    drawTree(*world_.tree(), tree, out);
-    layerCounts_.add(dd::Layer::Tree, out.primitiveCount() - before);
+  dd::LayerCounts emitted;
+  world_.emitDebugDraw(emitted_, out, &emitted);
+  // A shown tree is counted after --tree-depth (countShownTree).
+  for (const auto& [name, layer] : dd::allLayers())
+    if (layer != dd::Layer::Tree || purpose_ == FramePurpose::Record) layerCounts_.add(layer, emitted.of(layer));
+}
+
+// Body states (with the scene's names) for labels, --highlight, --follow and
+// the sleep layer, and always in a recording so its replay can use them.
+void SceneFrames::drawBodies(dd::Frame& out) {
+  const bool needed = purpose_ == FramePurpose::Record || selection_.labels || !selection_.highlight.empty() ||
+                      selection_.follow || emitted_.has(dd::Layer::Sleep);
+  if (!needed) return;
+  world_.emitBodies(out);
+  for (dd::BodyInfo& body : out.bodies) {
+    if (static_cast<std::size_t>(body.index) < scene_.bodyNames.size()) body.name = scene_.bodyNames[body.index];
   }
+}
+
+// The grid is fixed for the run: built once, copied into each frame.
+void SceneFrames::drawGrid(dd::Frame& out) {
+  if (!emitted_.has(dd::Layer::Grid)) return;
+  const std::size_t before = out.primitiveCount();
+  out.lines.insert(out.lines.end(), grid_.lines.begin(), grid_.lines.end());
+  out.arrows.insert(out.arrows.end(), grid_.arrows.begin(), grid_.arrows.end());
+  out.labels.insert(out.labels.end(), grid_.labels.begin(), grid_.labels.end());
+  out.texts.insert(out.texts.end(), grid_.texts.begin(), grid_.texts.end());
+  layerCounts_.add(dd::Layer::Grid, out.primitiveCount() - before);
 }
 
 void SceneFrames::drawOverlay(int index, dd::Frame& out) {
-  if (!options_.layers.has(dd::Layer::Overlay)) return;
+  if (!emitted_.has(dd::Layer::Overlay)) return;
   const std::size_t before = out.primitiveCount();
+  const dd::FrameMark mark = dd::markOf(out);
   addOverlay(
       scene_, world_,
       {index, options_.runFrames, options_.timing ? std::optional<double>(lastStepMs_) : std::nullopt, options_.width},
       out);
+  dd::fillTagsSince(out, mark, dd::tagOf(dd::Layer::Overlay));
   layerCounts_.add(dd::Layer::Overlay, out.primitiveCount() - before);
+}
+
+// The tree's count is of what --tree-depth lets through.
+void SceneFrames::countShownTree(const dd::Frame& shown) {
+  std::size_t tree = 0;
+  for (const dd::WireBox& box : shown.wireBoxes) tree += box.tag.layer == static_cast<std::uint32_t>(dd::Layer::Tree);
+  layerCounts_.add(dd::Layer::Tree, tree);
 }
 
 dd::RecordedFrame SceneFrames::frame(int index) {
@@ -136,9 +181,18 @@ dd::RecordedFrame SceneFrames::frame(int index) {
   const auto start = Clock::now();
   dd::RecordedFrame out;
   out.index = index;
+  out.shownLayers = options_.layers;
+  drawGrid(out.frame);
   drawLayers(out.frame);
   drawOverlay(index, out.frame);
-  out.view = toView(camera());
+  drawBodies(out.frame);
+  out.view = toView(camera(out.frame));
+  if (purpose_ == FramePurpose::Show) {
+    dd::ViewReport report;
+    out.frame = dd::selectView(out.frame, selection_, &report);
+    labelsLeftOut_ = std::max(labelsLeftOut_, report.labelsLeftOut);
+    countShownTree(out.frame);
+  }
   drawSeconds_ += secondsSince(start);
   return out;
 }

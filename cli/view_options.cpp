@@ -50,39 +50,135 @@ int runFrameCount(const FrameRange& frames, const SceneDescription& scene, int s
   return static_cast<int>(std::max<long long>(sceneFrames, frames.last));
 }
 
-// --tree-depth limits the tree layer: without that layer it would draw nothing.
-void checkTreeDepthHasTree(const Arguments& arguments, const SceneDescription& scene, debugdraw::LayerSet layers) {
-  if (!arguments.has("--tree-depth") || layers.has(debugdraw::Layer::Tree)) return;
-  const std::string source = arguments.has("--layers") ? "--layers" : scene.layers ? "the scene's" : "the default";
-  throw UsageError("--tree-depth: it limits the 'tree' layer, which is not among the layers (" +
-                   debugdraw::layerNames(layers) + ", from " + source + "); add tree to --layers");
+void checkBodyIndex(int body, const std::string& option, const SceneDescription& scene) {
+  if (body >= static_cast<int>(scene.bodies.size()))
+    throw UsageError(option + ": scene '" + scene.name + "' has no body " + std::to_string(body) + " (it has " +
+                     std::to_string(scene.bodies.size()) + ")");
 }
 
-// --layers, else the scene's layers, else shapes,aabbs,overlay.
-debugdraw::LayerSet readLayers(const Arguments& arguments, const SceneDescription& scene) {
-  try {
-    return debugdraw::parseLayers(arguments.value("--layers", scene.layers.value_or("shapes,aabbs,overlay")));
-  } catch (const std::invalid_argument& error) {
-    throw UsageError(std::string("--layers: ") + error.what());
-  }
+// Where the layer list came from, for messages.
+std::string layersSource(const Arguments& arguments, const SceneDescription& scene) {
+  return arguments.has("--layers") ? "--layers" : scene.layers ? "the scene's" : "the default";
+}
+
+std::vector<OptionSpec> cameraOptionSpecs() {
+  return {{"--follow", "", "BODY", "keep body number BODY at the centre of the view, marked by corner brackets"},
+          {"--eye", "", "X,Y,Z", "camera position"},
+          {"--target", "", "X,Y,Z", "point the camera looks at"},
+          {"--fov", "", "DEGREES", "vertical field of view (default 45)"},
+          {"--ortho", "", "", "orthographic projection"}};
+}
+
+std::vector<OptionSpec> focusOptionSpecs() {
+  return {{"--highlight", "", "A[,B...]",
+           "bodies in focus: drawn as they are with their contacts, candidate pairs and tree path to the root; the "
+           "rest faded; their state in the overlay"},
+          {"--labels", "", "", "body numbers (and scene names) over the bodies"},
+          {"--samples", "", "N", "multisample anti-aliasing: 0 (default), 2, 4 or 8 samples per pixel"}};
 }
 
 }  // namespace
 
+debugdraw::LayerSet readLayerList(const std::string& list, const std::string& option) {
+  try {
+    return debugdraw::parseLayers(list);
+  } catch (const std::invalid_argument& error) {
+    throw UsageError(option + ": " + error.what());
+  }
+}
+
+void readTreeDepth(const Arguments& arguments, ViewOptions& options, const std::string& layersFrom) {
+  if (!arguments.has("--tree-depth")) return;
+  if (!options.layers.has(debugdraw::Layer::Tree))
+    throw UsageError("--tree-depth: it limits the 'tree' layer, which is not among the layers (" +
+                     debugdraw::layerNames(options.layers) + ", from " + layersFrom + "); add tree to --layers");
+  std::tie(options.treeMinDepth, options.treeMaxDepth) = parseDepthRange(arguments.value("--tree-depth"), "--tree-depth");
+}
+
+CameraOptions readCameraOptions(const Arguments& arguments) {
+  CameraOptions camera;
+  if (arguments.has("--follow")) {
+    const std::string body = arguments.value("--follow");
+    camera.follow = parseIndex(body, "--follow", body, std::numeric_limits<int>::max());
+  }
+  if (arguments.has("--eye")) camera.eye = parseVector(arguments.value("--eye"), "--eye");
+  if (arguments.has("--target")) camera.target = parseVector(arguments.value("--target"), "--target");
+  if (arguments.has("--fov")) {
+    camera.fovYDegrees = arguments.positiveDouble("--fov", 45);
+    if (*camera.fovYDegrees >= 180) throw UsageError("--fov: must be below 180 degrees");
+  }
+  camera.orthographic = arguments.has("--ortho");
+  return camera;
+}
+
+std::vector<int> readHighlight(const Arguments& arguments) {
+  if (!arguments.has("--highlight")) return {};
+  const std::string list = arguments.value("--highlight");
+  std::vector<int> bodies;
+  std::stringstream stream(list);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    const int body = parseIndex(item, "--highlight", list, std::numeric_limits<int>::max());
+    if (std::find(bodies.begin(), bodies.end(), body) != bodies.end())
+      throw UsageError("--highlight: body " + item + " is given twice in '" + list + "'");
+    if (bodies.size() == static_cast<std::size_t>(limits::maxHighlighted))
+      throw UsageError("--highlight: at most " + std::to_string(limits::maxHighlighted) + " bodies");
+    bodies.push_back(body);
+  }
+  if (bodies.empty() || list.back() == ',') throw UsageError("--highlight: expected A[,B...], got '" + list + "'");
+  return bodies;
+}
+
+int readSamples(const Arguments& arguments) {
+  if (!arguments.has("--samples")) return 0;
+  const std::string text = arguments.value("--samples");
+  if (text != "0" && text != "2" && text != "4" && text != "8")
+    throw UsageError("--samples: expected 0, 2, 4 or 8, got '" + text + "'");
+  return std::stoi(text);
+}
+
+debugdraw::ViewSelection selectionOf(const ViewOptions& options) {
+  debugdraw::ViewSelection selection;
+  selection.layers = options.layers;
+  selection.treeMinDepth = options.treeMinDepth;
+  selection.treeMaxDepth = options.treeMaxDepth;
+  selection.highlight = options.highlight;
+  selection.labels = options.labels;
+  selection.follow = options.camera.follow;
+  selection.imageWidth = options.width;
+  selection.imageHeight = options.height;
+  return selection;
+}
+
+std::vector<OptionSpec> recordViewOptionSpecs() {
+  std::vector<OptionSpec> specs;
+  for (const OptionSpec& spec : viewOptionSpecs()) {
+    bool focus = false;
+    for (const OptionSpec& focusSpec : focusOptionSpecs()) focus = focus || focusSpec.name == spec.name;
+    if (!focus) specs.push_back(spec);
+  }
+  return specs;
+}
+
+std::vector<OptionSpec> replayViewOptionSpecs() {
+  std::vector<OptionSpec> specs = {
+      {"--layers", "", "LIST", "debug layers to show, among those recorded (default: those the recording run showed)"},
+      {"--tree-depth", "", "A:B", "draw only tree nodes of depth A..B (root 0; 'A:' for no upper limit)"}};
+  for (auto& group : {focusOptionSpecs(), cameraOptionSpecs()}) specs.insert(specs.end(), group.begin(), group.end());
+  return specs;
+}
+
 std::vector<OptionSpec> viewOptionSpecs() {
-  return {{"--frames", "", "N|A:B", "frames 0..N-1, or A..B-1 of the full run (default: the scene's steps / K + 1)"},
+  std::vector<OptionSpec> specs = {{"--frames", "", "N|A:B", "frames 0..N-1, or A..B-1 of the full run (default: the scene's steps / K + 1)"},
           {"--size", "", "WxH", "image size in pixels (default 1280x720)"},
           {"--layers", "", "LIST", "comma list of debug layers: shapes, wire, aabbs, fat, tree, contacts, velocities, "
                                    "sleep, pairs, overlay (default: the scene's, else shapes,aabbs,overlay)"},
           {"--tree-depth", "", "A:B",
            "draw only tree nodes of depth A..B (root 0; 'A:' for no upper limit; needs the tree layer)"},
           {"--steps-per-frame", "", "K", "simulation steps between frames (default 1)"},
-          {"--follow", "", "BODY", "keep body number BODY at the centre of the view"},
-          {"--eye", "", "X,Y,Z", "camera position"},
-          {"--target", "", "X,Y,Z", "point the camera looks at"},
-          {"--fov", "", "DEGREES", "vertical field of view (default 45)"},
-          {"--ortho", "", "", "orthographic projection"},
           {"--no-timing", "", "", "leave the measured step time out of the overlay (repeatable frames)"}};
+  for (auto& group : {focusOptionSpecs(), cameraOptionSpecs()}) specs.insert(specs.end(), group.begin(), group.end());
+  return specs;
 }
 
 OptionSpec backendOptionSpec() {
@@ -140,24 +236,14 @@ ViewOptions readViewOptions(const Arguments& arguments, const SceneDescription& 
   checkRunLength(options.frames, options.stepsPerFrame);
   options.runFrames = runFrameCount(options.frames, scene, options.stepsPerFrame);
   std::tie(options.width, options.height) = parseSize(arguments.value("--size", "1280x720"), "--size");
-  options.layers = readLayers(arguments, scene);
-  checkTreeDepthHasTree(arguments, scene, options.layers);
-  if (arguments.has("--tree-depth"))
-    std::tie(options.treeMinDepth, options.treeMaxDepth) = parseDepthRange(arguments.value("--tree-depth"), "--tree-depth");
-  if (arguments.has("--follow")) {
-    const std::string body = arguments.value("--follow");
-    options.follow = parseIndex(body, "--follow", body, std::numeric_limits<int>::max());
-    if (*options.follow >= static_cast<int>(scene.bodies.size()))
-      throw UsageError("--follow: scene '" + scene.name + "' has no body " + body + " (it has " +
-                       std::to_string(scene.bodies.size()) + ")");
-  }
-  if (arguments.has("--eye")) options.eye = parseVector(arguments.value("--eye"), "--eye");
-  if (arguments.has("--target")) options.target = parseVector(arguments.value("--target"), "--target");
-  if (arguments.has("--fov")) {
-    options.fovYDegrees = arguments.positiveDouble("--fov", 45);
-    if (*options.fovYDegrees >= 180) throw UsageError("--fov: must be below 180 degrees");
-  }
-  options.orthographic = arguments.has("--ortho");
+  options.layers = readLayerList(arguments.value("--layers", scene.layers.value_or("shapes,aabbs,overlay")), "--layers");
+  readTreeDepth(arguments, options, layersSource(arguments, scene));
+  options.camera = readCameraOptions(arguments);
+  options.highlight = readHighlight(arguments);
+  for (int body : options.highlight) checkBodyIndex(body, "--highlight", scene);
+  if (options.camera.follow) checkBodyIndex(*options.camera.follow, "--follow", scene);
+  options.labels = arguments.has("--labels");
+  options.samples = readSamples(arguments);
   options.timing = !arguments.has("--no-timing");
   return options;
 }

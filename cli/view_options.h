@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/arguments.h"
+#include "debugdraw/frame_view.h"
 #include "debugdraw/primitives.h"
 #include "render/renderer.h"
 #include "scenes/scene.h"
@@ -20,6 +21,15 @@ struct FrameRange {
   int count() const { return last - first; }
 };
 
+// Where the camera looks from; each unset value keeps the framed (or recorded) view's.
+struct CameraOptions {
+  std::optional<int> follow;  // body index
+  std::optional<Vec3> eye, target;
+  std::optional<double> fovYDegrees;
+  bool orthographic = false;
+  bool any() const { return follow || eye || target || fovYDegrees || orthographic; }
+};
+
 struct ViewOptions {
   FrameRange frames;
   int runFrames = 0;  // frames in the whole run, of which `frames` may be a slice: the overlay's "of N"
@@ -27,15 +37,34 @@ struct ViewOptions {
   int width = 1280, height = 720;
   debugdraw::LayerSet layers;
   int treeMinDepth = 0, treeMaxDepth = 1 << 30;
-  std::optional<int> follow;  // body index
-  std::optional<Vec3> eye, target;
-  std::optional<double> fovYDegrees;
-  bool orthographic = false;
+  CameraOptions camera;
+  std::vector<int> highlight;  // body indices in focus
+  bool labels = false;
+  int samples = 0;  // MSAA samples per pixel
   bool timing = true;  // measured step time in the overlay (off: byte-identical frames run after run)
 };
 
-// The option rows for a CommandSpec.
+// The option rows for a CommandSpec: every view option (render), or those a
+// recording's replay can still change: layers, focus, camera (replay).
 std::vector<OptionSpec> viewOptionSpecs();
+std::vector<OptionSpec> replayViewOptionSpecs();
+// `record` keeps every layer and body: focus and labels are chosen at replay.
+std::vector<OptionSpec> recordViewOptionSpecs();
+
+// --layers, --tree-depth, --highlight, --labels, --follow and the camera as a
+// viewer applies them (debugdraw/frame_view.h).
+debugdraw::ViewSelection selectionOf(const ViewOptions& options);
+
+// The camera options alone (replay: no scene to check --follow against).
+CameraOptions readCameraOptions(const Arguments& arguments);
+// --highlight A,B,...: distinct body indices, at most limits::maxHighlighted.
+std::vector<int> readHighlight(const Arguments& arguments);
+// --layers LIST; throws UsageError naming the option.
+debugdraw::LayerSet readLayerList(const std::string& list, const std::string& option);
+// --tree-depth into `options` (needs the tree layer among options.layers).
+void readTreeDepth(const Arguments& arguments, ViewOptions& options, const std::string& layersFrom);
+// --samples N: 0 (off), 2, 4 or 8.
+int readSamples(const Arguments& arguments);
 
 // "N" (frames 0..N-1) or "A:B" (frames A..B-1, a slice). Throws UsageError
 // naming `option`, also for a range with no frame in it ("5:5").

@@ -1,6 +1,7 @@
 #include "debugdraw/frame_view.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <set>
@@ -30,6 +31,8 @@ struct Focus {
   const ViewSelection& selection;
   std::set<int> bodies;     // highlighted
   std::set<int> treePath;   // tree nodes from the highlighted leaves to the root
+  // Sleep with shapes: sleeping bodies' solids darkened instead of outlined.
+  std::set<int> darkened;
   bool active() const { return !bodies.empty(); }
   bool touches(const Tag& tag) const { return bodies.count(tag.body) > 0 || bodies.count(tag.otherBody) > 0; }
 };
@@ -45,12 +48,17 @@ bool layerShown(const Tag& tag, const ViewSelection& selection) {
 // for: what touches the body, what the broad phase paired it with, and where
 // it sits in the tree.
 bool aboutRelations(const Tag& tag) {
-  return isLayer(tag, Layer::Contacts) || isLayer(tag, Layer::Pairs) || isLayer(tag, Layer::Impulses) ||
-         isLayer(tag, Layer::Fat);
+  return isLayer(tag, Layer::Contacts) || isLayer(tag, Layer::Pairs) || isLayer(tag, Layer::Fat);
+}
+
+// A sleeping body's own outline (sleep layer, tagged with the body) gives way
+// to its darkened solid when shapes show; island outlines stay.
+bool outlineOfDarkenedBody(const Tag& tag, const Focus& focus) {
+  return isLayer(tag, Layer::Sleep) && tag.body >= 0 && focus.darkened.count(tag.body) > 0;
 }
 
 Shown decide(const Tag& tag, bool text, const Focus& focus) {
-  const bool shown = layerShown(tag, focus.selection);
+  const bool shown = layerShown(tag, focus.selection) && !outlineOfDarkenedBody(tag, focus);
   if (!focus.active() || text || isLayer(tag, Layer::Overlay) || isLayer(tag, Layer::Grid))
     return shown ? Shown::Plain : Shown::Hidden;
   if (isLayer(tag, Layer::Tree)) {
@@ -61,12 +69,18 @@ Shown decide(const Tag& tag, bool text, const Focus& focus) {
   return shown ? Shown::Faded : Shown::Hidden;
 }
 
+constexpr float kSleepingShade = 0.35f;
+
+Color shaded(Color color, float factor) { return {color.r * factor, color.g * factor, color.b * factor, color.a}; }
+
 template <typename Item>
 void copySelected(const std::vector<Item>& from, std::vector<Item>& to, const Focus& focus, bool text = false) {
   for (const Item& item : from) {
     const Shown shown = decide(item.tag, text, focus);
     if (shown == Shown::Hidden) continue;
     to.push_back(item);
+    if (isLayer(item.tag, Layer::Shapes) && focus.darkened.count(item.tag.body) > 0)
+      to.back().color = shaded(item.color, kSleepingShade);
     if (shown == Shown::Faded) to.back().color = faded(item.color);
     if (shown == Shown::Focus) to.back().color = focusColor;
   }
@@ -189,26 +203,43 @@ int addLabels(const Frame& tagged, const ViewSelection& selection, Frame& out) {
 
 std::string vectorText(const Vec3& v) {
   char text[96];
-  std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", v.x(), v.y(), v.z());
+  // What rounds to zero prints as 0.00: "-0.00" would read as a direction.
+  const auto shown = [](double value) { return std::abs(value) < 0.005 ? 0.0 : value; };
+  std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", shown(v.x()), shown(v.y()), shown(v.z()));
   return text;
 }
 
-// One line per highlighted body at the bottom left: where it is, how fast,
-// how many contact points it had in the frame.
+// Two lines per highlighted body at the bottom left: which body, its contact
+// points in the frame and whether it sleeps; where it is and how fast.
 void addBodyLines(const Frame& tagged, const ViewSelection& selection, Frame& out) {
   const float scale = selection.imageWidth >= 800 ? 2.0f : 1.0f;
   const float lineHeight = 12 * scale;
-  float y = static_cast<float>(selection.imageHeight) - 6 * scale - lineHeight * selection.highlight.size();
+  float y = static_cast<float>(selection.imageHeight) - 6 * scale - 2 * lineHeight * selection.highlight.size();
   for (int index : selection.highlight) {
     const BodyInfo& body = requireBody(tagged, index, "--highlight");
-    std::string line = "body " + std::to_string(body.index);
-    if (!body.name.empty()) line.append(" '").append(body.name, 0, 48).append("'");
-    line += "  p " + vectorText(body.position) + " m  v " + vectorText(body.linearVelocity) + " m/s  contacts " +
-            std::to_string(body.contacts);
-    if (body.asleep) line += "  asleep";
-    if (body.isStatic) line += "  static";
-    out.texts.push_back({6 * scale, std::max(y, 0.0f), scale, line, focusColor});
-    y += lineHeight;
+    std::string name = "body " + std::to_string(body.index);
+    if (!body.name.empty()) name.append(" '").append(body.name, 0, 48).append("'");
+    name += "  contacts " + std::to_string(body.contacts);
+    if (body.asleep) name += "  asleep";
+    if (body.isStatic) name += "  static";
+    const std::string state = "  p " + vectorText(body.position) + " m  v " + vectorText(body.linearVelocity) + " m/s";
+    for (const std::string& line : {name, state}) {
+      out.texts.push_back({6 * scale, std::max(y, 0.0f), scale, line, focusColor});
+      y += lineHeight;
+    }
+  }
+}
+
+// Legends (the tree's depths, the impulse scale) are stacked top left under
+// the overlay in the order drawn, after the selection: a depth range or a
+// hidden layer leaves no gap, and two legends never overlap.
+void stackLegends(Frame& out) {
+  constexpr float top = 64, lineHeight = 11;
+  float y = top;
+  for (Text& text : out.texts) {
+    if (!isLayer(text.tag, Layer::Tree) && !isLayer(text.tag, Layer::Impulses)) continue;
+    text.y = y;
+    y += lineHeight * text.scale;
   }
 }
 
@@ -227,6 +258,10 @@ Frame selectView(const Frame& tagged, const ViewSelection& selection, ViewReport
   Focus focus{selection, {selection.highlight.begin(), selection.highlight.end()}, {}};
   for (int index : focus.bodies) requireBody(tagged, index, "--highlight");
   focus.treePath = treePathOf(tagged, focus.bodies);
+  if (selection.layers.has(Layer::Sleep) && selection.layers.has(Layer::Shapes)) {
+    for (const BodyInfo& body : tagged.bodies)
+      if (body.asleep) focus.darkened.insert(body.index);
+  }
   Frame out;
   copySelected(tagged.boxes, out.boxes, focus);
   copySelected(tagged.spheres, out.spheres, focus);
@@ -239,6 +274,7 @@ Frame selectView(const Frame& tagged, const ViewSelection& selection, ViewReport
   copySelected(tagged.texts, out.texts, focus, true);
   copySelected(tagged.labels, out.labels, focus, true);
   out.bodies = tagged.bodies;
+  stackLegends(out);
   if (focus.active()) addHighlightBoxes(tagged, focus, out);
   if (selection.follow) addFollowMarker(requireBody(tagged, *selection.follow, "--follow"), out);
   if (focus.active() && selection.layers.has(Layer::Overlay)) addBodyLines(tagged, selection, out);

@@ -54,6 +54,9 @@ enum class Layer : std::uint32_t {
   Grid = 1u << 11,
 };
 
+// Every layer's bit (Shapes .. Grid).
+inline constexpr std::uint32_t allLayerBits = (static_cast<std::uint32_t>(Layer::Grid) << 1) - 1;
+
 struct LayerSet {
   std::uint32_t bits = 0;
   bool has(Layer layer) const { return (bits & static_cast<std::uint32_t>(layer)) != 0; }

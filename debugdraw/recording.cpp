@@ -19,7 +19,7 @@ constexpr std::uint64_t maxFrameIndex = static_cast<std::uint64_t>(std::numeric_
 constexpr double minRotationNorm = 1e-6, maxRotationNorm = 1e6;
 // The layer bits a version 2 tag may name (Shapes .. Grid). A new layer is a
 // new format version: an older reader could not say what to draw for it.
-constexpr std::uint32_t knownLayerBits = (static_cast<std::uint32_t>(Layer::Grid) << 1) - 1;
+constexpr std::uint32_t knownLayerBits = allLayerBits;
 // Encoded sizes in version 2: a tag (u32 layer, five i32) and the fixed part
 // of a label (before its tag) and of a body, strings without their characters.
 constexpr std::size_t tagBytes = 4 + 5 * 4;
@@ -341,6 +341,9 @@ std::string textTotalProblem(const Frame& frame) {
 // The frame's first value beyond the limits, named by frame, list and item.
 std::string frameProblem(const RecordedFrame& recorded) {
   const Frame& f = recorded.frame;
+  if (recorded.shownLayers.empty() || (recorded.shownLayers.bits & ~knownLayerBits) != 0)
+    return "frame " + std::to_string(recorded.index) + ", shown layers " + std::to_string(recorded.shownLayers.bits) +
+           " name no layer or an unknown one";
   for (const std::string& problem :
        {viewProblem(recorded.view), listProblem(f.boxes, "solid boxes"), listProblem(f.spheres, "solid spheres"),
         listProblem(f.capsules, "capsules"), listProblem(f.meshes, "solid meshes"),
@@ -449,6 +452,7 @@ std::string encodeFrame(const RecordedFrame& recorded) {
   ByteWriter out;
   out.u32(static_cast<std::uint32_t>(recorded.index));
   writeView(out, recorded.view);
+  out.u32(recorded.shownLayers.bits);
   auto list = [&](const auto& items, auto&& each) {
     out.u32(static_cast<std::uint32_t>(items.size()));
     for (const auto& item : items) {
@@ -496,9 +500,20 @@ class ListReader {
   std::uint32_t version_;
 };
 
+// Version 1 frames hold only the layers that were shown.
+LayerSet readShownLayers(ByteReader& in, std::uint32_t version) {
+  if (version < 2) return LayerSet{knownLayerBits};
+  const std::uint32_t bits = in.u32();
+  if (bits == 0 || (bits & ~knownLayerBits) != 0)
+    in.fail("shown layers " + std::to_string(bits) + " name no layer or an unknown one (known bits: " +
+            std::to_string(knownLayerBits) + ")");
+  return LayerSet{bits};
+}
+
 void decodeFrame(ByteReader& in, const std::map<std::uint64_t, std::shared_ptr<const TriangleMesh>>& meshes,
                  std::uint32_t version, RecordedFrame& out) {
   out.view = readView(in);
+  out.shownLayers = readShownLayers(in, version);
   Frame& f = out.frame;
   f.clear();
   ListReader readList(in, out.index, version);

@@ -53,6 +53,9 @@ struct View {
 struct RecordedFrame {
   int index = 0;
   View view;
+  // The layers the recording run was asked to show (its --layers): what a
+  // replay shows unless told otherwise. The frame may hold more (every layer).
+  LayerSet shownLayers{allLayerBits};
   Frame frame;
 };
 

@@ -123,15 +123,10 @@ std::vector<int> contactStates(const std::vector<ShownContact>& points, std::siz
   return states;
 }
 
-struct IslandBox {
-  Aabb box;
-  int lowestBody = 0;  // the island's tag: --highlight of that body finds it
-};
-
 // Sleeping bodies linked by the contacts they rest on fall asleep and wake
 // together: one island. Static bodies link nothing (a floor would join every
 // pile). Islands of two or more bodies, in order of their lowest body.
-std::vector<IslandBox> sleepingIslandBoxes(const std::vector<RigidBody>& bodies,
+std::vector<Aabb> sleepingIslandBoxes(const std::vector<RigidBody>& bodies,
                                            const std::vector<ShownContact>& resting) {
   std::vector<std::size_t> root(bodies.size());
   for (std::size_t i = 0; i < root.size(); ++i) root[i] = i;
@@ -146,7 +141,7 @@ std::vector<IslandBox> sleepingIslandBoxes(const std::vector<RigidBody>& bodies,
   }
   std::vector<int> size(bodies.size(), 0);
   for (std::size_t i = 0; i < bodies.size(); ++i) ++size[find(i)];
-  std::vector<IslandBox> islands;
+  std::vector<Aabb> islands;
   std::vector<int> slot(bodies.size(), -1);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const std::size_t island = find(i);  // the island's lowest body, met first
@@ -154,9 +149,9 @@ std::vector<IslandBox> sleepingIslandBoxes(const std::vector<RigidBody>& bodies,
     const Aabb box = bodies[i].collider().worldBounds(bodies[i].transform());
     if (slot[island] < 0) {
       slot[island] = static_cast<int>(islands.size());
-      islands.push_back({box, static_cast<int>(island)});
+      islands.push_back(box);
     }
-    islands[slot[island]].box = islands[slot[island]].box.merged(box);
+    islands[slot[island]] = islands[slot[island]].merged(box);
   }
   return islands;
 }
@@ -258,11 +253,7 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
     if (!body.isStatic()) typicalSize = std::max(typicalSize, box.halfExtents().maxCoeff());
     const auto tagOfBody = [i](dd::Layer layer) { return dd::tagOf(layer, static_cast<int>(i)); };
     if (layers.has(dd::Layer::Shapes)) {
-      dd::Color color = body.isStatic() ? dd::colors::staticBody : bodyColor(i);
-      if (layers.has(dd::Layer::Sleep) && asleep_[i]) {
-        color = shade(color, 0.35f);
-        if (counts) counts->add(dd::Layer::Sleep, 1);  // the darkened body is what the layer drew
-      }
+      const dd::Color color = body.isStatic() ? dd::colors::staticBody : bodyColor(i);
       emit(tagOfBody(dd::Layer::Shapes), [&] { emitShape(body, color, meshes[i], frame); });
     }
     if (layers.has(dd::Layer::Wire)) emit(tagOfBody(dd::Layer::Wire), [&] { emitWire(body, frame); });
@@ -279,16 +270,20 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
       emit(tagOfBody(dd::Layer::Velocities), [&] {
         frame.arrows.push_back({body.position(), body.position() + body.linearVelocity() * 0.1, {0.3f, 0.9f, 1.0f, 1}});
       });
-    if (layers.has(dd::Layer::Sleep) && !layers.has(dd::Layer::Shapes) && asleep_[i])
+    // Each layer's primitives do not depend on the others requested, so a
+    // recording of every layer replays any choice of them: the viewer darkens
+    // the solids of sleeping bodies instead of these outlines when shapes show
+    // (debugdraw/frame_view.cpp).
+    if (layers.has(dd::Layer::Sleep) && asleep_[i])
       emit(tagOfBody(dd::Layer::Sleep), [&] {
         frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), {0.5f, 0.3f, 0.7f, 1}});
       });
   }
   if (layers.has(dd::Layer::Sleep))
-    for (const IslandBox& island : sleepingIslandBoxes(bodies_, resting_))
-      emit(dd::tagOf(dd::Layer::Sleep, island.lowestBody), [&] {
-        frame.wireBoxes.push_back({island.box.center(), Quat::Identity(),
-                                   island.box.halfExtents() + Vec3::Constant(0.05), sleepingIsland});
+    for (const Aabb& island : sleepingIslandBoxes(bodies_, resting_))
+      emit(dd::tagOf(dd::Layer::Sleep), [&] {  // a whole island, no one body
+        frame.wireBoxes.push_back({island.center(), Quat::Identity(), island.halfExtents() + Vec3::Constant(0.05),
+                                   sleepingIsland});
       });
   if (layers.has(dd::Layer::Tree) && broadPhaseTree)
     emit(dd::tagOf(dd::Layer::Tree), [&] {

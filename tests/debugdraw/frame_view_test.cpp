@@ -114,7 +114,7 @@ TEST(FrameView, HighlightFadesOthersAndShowsContactsPairsAndTreePath) {
   const bool bodyLine = std::any_of(shown.texts.begin(), shown.texts.end(),
                                     [](const dd::Text& text) { return text.text.rfind("body 0", 0) == 0; });
   EXPECT_TRUE(bodyLine);
-  EXPECT_EQ(shown.texts.size(), 2u);
+  EXPECT_EQ(shown.texts.size(), 3u);  // overlay, and two lines on body 0
 }
 
 TEST(FrameView, HighlightOfABodyTheFrameLacksIsRefused) {

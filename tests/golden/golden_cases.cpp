@@ -25,6 +25,20 @@ std::function<SceneDescription()> closeUp(SceneDescription (*make)(int), int siz
 
 SceneDescription pyramid(int base) { return pyramidScene(base); }
 
+// A frame through the whole `physdbg render` path (SceneFrames, the viewer's
+// selection), for what only that path draws: focus, labels, the grid.
+std::function<render::Image(render::Renderer&)> viewed(std::function<SceneDescription()> scene, int frame,
+                                                       const std::string& layers, std::vector<int> highlight = {},
+                                                       bool labels = false) {
+  return [=](render::Renderer& renderer) {
+    cli::ViewOptions options;
+    options.layers = debugdraw::parseLayers(layers);
+    options.highlight = highlight;
+    options.labels = labels;
+    return cli::renderViewFrame(renderer, scene(), frame, options);
+  };
+}
+
 }  // namespace
 
 const std::vector<GoldenCase>& goldenCases() {
@@ -44,6 +58,14 @@ const std::vector<GoldenCase>& goldenCases() {
       // that rotates the tree, after the swap (highlighted subtrees, diagram).
       {"tree_rotation_pyramid", [] { return pyramidScene(4); }, 0, "",
        [](render::Renderer& renderer) { return cli::renderTreeRotationFrame(pyramidScene(4), 0, true, renderer); }},
+      // One body in focus: body 5 of a small pyramid emphasised with its
+      // contacts, pairs and tree path (gold), the rest faded, every body labelled.
+      {"pyramid_highlight_labels", closeUp(pyramid, 4, Vec3(0, 1.8, 0), 8.5), 30, "shapes,overlay",
+       viewed(closeUp(pyramid, 4, Vec3(0, 1.8, 0), 8.5), 30, "shapes,overlay", {5}, true)},
+      // Contact forces of a resting stack (arrows on one scale, legend) over
+      // the ground grid with its metre labels and axis gizmo.
+      {"stack_impulses_grid", closeUp(stackScene, 4, Vec3(0, 2, 0), 9.0), 20, "shapes,impulses,grid",
+       viewed(closeUp(stackScene, 4, Vec3(0, 2, 0), 9.0), 20, "shapes,impulses,grid")},
   };
   return cases;
 }

@@ -19,7 +19,8 @@ struct GoldenCase {
   std::function<SceneDescription()> scene;
   int steps = 0;
   std::string layers;
-  // Set for pictures that are not one frame of the scene (the tree-rotation view).
+  // Set for pictures drawn another way: the tree-rotation view, or a frame
+  // through the whole render path (focus, labels, grid).
   std::function<render::Image(render::Renderer&)> draw;
 };
 
