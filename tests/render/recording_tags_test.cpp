@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -12,6 +13,7 @@
 
 #include "debugdraw/recording.h"
 #include "recording_test_support.h"
+#include "visual_test_support.h"
 
 namespace {
 
@@ -206,6 +208,22 @@ TEST(RecordingTags, Version1FilesStillReadWithDefaultTags) {
   const std::vector<dd::RecordedFrame> again = dd::readRecordingBytes(recordingBytes({read}), "again.rec");
   ASSERT_EQ(again.size(), 1u);
   EXPECT_EQ(again[0].frame.primitiveCount(), 9u);
+}
+
+// replay still draws a version 1 file as recorded, and says why it cannot
+// choose layers, bodies or a camera in one.
+TEST(RecordingTags, ReplayOfAVersion1FileDrawsItAndRefusesViewChoices) {
+  physdbg::visualtesting::ScratchFolder folder;
+  std::ofstream(folder / "old.rec", std::ios::binary) << version1File();
+  using physdbg::visualtesting::runPhysdbg;
+  const auto plain = runPhysdbg("replay " + (folder / "old.rec") + " --size 64x48 -o " + (folder / "plain"));
+  EXPECT_EQ(plain.exitCode, 0) << plain.output;
+  for (const char* option : {"--layers shapes", "--highlight 0", "--labels", "--eye 1,2,3", "--tree-depth 0:1 --layers tree"}) {
+    const auto refused =
+        runPhysdbg("replay " + (folder / "old.rec") + " --size 64x48 " + option + " -o " + (folder / "chosen"));
+    EXPECT_EQ(refused.exitCode, 2) << option << "\n" << refused.output;
+    expectMentions(refused.output, {"old.rec", "version 1", "recorded again"});
+  }
 }
 
 TEST(RecordingTags, NewerVersionsAreRefusedNamingTheVersion) {
