@@ -227,14 +227,28 @@ std::optional<Eigen::Vector2d> pixelOf(const ScreenMapping& screen, const Vector
   return Eigen::Vector2d((ndc.x() + 1) * 0.5 * screen.width, (1 - ndc.y()) * 0.5 * screen.height);
 }
 
+bool overlaps(const std::array<float, 4>& a, const std::array<float, 4>& b) {
+  return a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
+}
+
 // Labels in view, as screen-space text; every label is validated, seen or not.
+// A label that would cover one placed before it is left out: in a crowd a
+// few readable names beat an unreadable white mass, and producers put the
+// labels that matter most (highlighted bodies) first.
 std::vector<debugdraw::Text> placedLabels(const debugdraw::Frame& frame, const Vector3d& origin,
                                           const ScreenMapping* screen) {
   std::vector<debugdraw::Text> placed;
+  std::vector<std::array<float, 4>> taken;
   for (const auto& label : frame.labels) {
     validateLabel(label);
     if (!screen) continue;
-    if (const auto anchor = pixelOf(*screen, label.position - origin)) placed.push_back(labelText(label, *anchor));
+    const auto anchor = pixelOf(*screen, label.position - origin);
+    if (!anchor) continue;
+    debugdraw::Text text = labelText(label, *anchor);
+    const std::array<float, 4> extent = textExtent(text);
+    if (std::any_of(taken.begin(), taken.end(), [&](const auto& other) { return overlaps(extent, other); })) continue;
+    taken.push_back(extent);
+    placed.push_back(std::move(text));
   }
   return placed;
 }

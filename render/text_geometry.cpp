@@ -93,6 +93,13 @@ debugdraw::Text labelText(const debugdraw::Label& label, const Eigen::Vector2d& 
   return debugdraw::Text{x, y, label.scale, label.text, label.color, label.tag};
 }
 
+std::array<float, 4> textExtent(const debugdraw::Text& text) {
+  const auto lines = static_cast<float>(std::count(text.text.begin(), text.text.end(), '\n') + 1);
+  const float margin = std::max(1.0f, std::round(text.scale * 0.5f));  // the outline's step
+  return {text.x - margin, text.y - margin, text.x + inkWidth(text.text) * text.scale + margin,
+          text.y + lines * kLineHeight * text.scale + margin};
+}
+
 std::size_t maxTextVertices() {
   return debugdraw::maxFrameTextCharacters * kMaxQuadsPerCharacter * kVerticesPerQuad * kPassesPerText;
 }

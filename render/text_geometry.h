@@ -1,6 +1,7 @@
 #pragma once
 // Screen-space text from stb_easy_font: each glyph is a set of axis-aligned
 // quads on a one-unit grid; scaled and rounded to whole pixels they stay crisp.
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -31,6 +32,9 @@ void appendTextOutline(const debugdraw::Text& text, std::vector<TextVertex>& tri
 // last baseline kLabelGapPixels above it, so the text sits just over what it names.
 inline constexpr float kLabelGapPixels = 4;
 debugdraw::Text labelText(const debugdraw::Label& label, const Eigen::Vector2d& anchor);
+
+// The pixel rectangle a text covers, outline included: x0, y0, x1, y1.
+std::array<float, 4> textExtent(const debugdraw::Text& text);
 
 // Throws std::invalid_argument for what appendText would refuse in the label's
 // text (scale, length) or a non-finite position. Checked whether or not the
