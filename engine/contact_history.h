@@ -20,8 +20,11 @@ struct ShownContact {
   std::uint32_t feature = 0;  // manifold feature id; 0 for a one-point contact
   Vec3 point = Vec3::Zero();  // midway between the surfaces, world
   Vec3 normal = Vec3::UnitY();  // from a to b
-  double depth = 0.0;    // penetration, m; 0 when held apart
-  double impulse = 0.0;  // normal impulse of the step, N s; 0 where no solver ran (seed solver, frame 0)
+  double depth = 0.0;  // penetration, m; 0 when held apart
+  // The normal impulse the solver applied here over the whole step (every
+  // substep its island took, and restitution), N s, so force = impulse / dt;
+  // 0 where no solver ran (seed solver, frame 0).
+  double impulse = 0.0;
   bool resting = false;  // both bodies asleep or static: a contact no step recomputes
 };
 

@@ -197,13 +197,14 @@ std::string newtonsText(double newtons) {
 }
 
 // One arrow per point that pushed: from the point along the normal (the force
-// on b), force = impulse / substep times metresPerNewton long, and a legend
-// that reads the scale.
-void emitImpulses(const std::vector<ShownContact>& points, double substep, double metresPerNewton, dd::Frame& frame) {
+// on b), force = impulse / dt times metresPerNewton long, and a legend that
+// reads the scale. The impulse is the step's total at the point, so the
+// force is the step's mean whatever substeps the solver took there.
+void emitImpulses(const std::vector<ShownContact>& points, double dt, double metresPerNewton, dd::Frame& frame) {
   bool drawn = false;
   for (const ShownContact& contact : points) {
     if (!(contact.impulse > 0.0)) continue;
-    const Vec3 arrow = contact.normal * (contact.impulse / substep * metresPerNewton);
+    const Vec3 arrow = contact.normal * (contact.impulse / dt * metresPerNewton);
     frame.arrows.push_back({contact.point, contact.point + arrow, dimmedIf(contact.resting, impulseColor),
                             dd::tagOf(dd::Layer::Impulses, static_cast<int>(contact.pair.a),
                                       static_cast<int>(contact.pair.b))});
@@ -294,13 +295,7 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
   if (layers.has(dd::Layer::Contacts))
     emit(dd::tagOf(dd::Layer::Contacts), [&] { emitShownContacts(shown, std::max(typicalSize, 0.2), frame); });
   if (layers.has(dd::Layer::Impulses))
-    emit(dd::tagOf(dd::Layer::Impulses), [&] {
-      // The solver's impulses are per substep. The world does not see which
-      // islands the solver stiffened (more, shorter substeps): their forces
-      // read short by base / their substeps (mass_stack: 8 / 12).
-      const double substep = settings_.dt / std::max(settings_.solver.substeps, 1);
-      emitImpulses(shown, substep, impulseScale(), frame);
-    });
+    emit(dd::tagOf(dd::Layer::Impulses), [&] { emitImpulses(shown, settings_.dt, impulseScale(), frame); });
   if (layers.has(dd::Layer::Pairs))
     emit(dd::tagOf(dd::Layer::Pairs), [&] {
       for (const BodyPair& pair : pairs_)

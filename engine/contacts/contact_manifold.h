@@ -20,9 +20,15 @@ struct ManifoldPoint {
   double separation = 0.0;
   std::uint32_t featureId = 0;
 
-  // Accumulated impulses, kept across steps for warm starting.
+  // Accumulated impulses, kept across steps for warm starting: each is the
+  // impulse of one substep (the last), so its force is normalImpulse over
+  // the substep that island took, which the settings do not tell.
   double normalImpulse = 0.0;
   double tangentImpulse[2] = {0.0, 0.0};
+  // The normal impulse the solver applied at this point over the whole step,
+  // every substep and the restitution pass, N s: force = stepNormalImpulse /
+  // dt whatever substeps its island took. Rebuilt by each step; display only.
+  double stepNormalImpulse = 0.0;
 };
 
 struct ContactManifold {

@@ -70,6 +70,15 @@ inline void SequentialImpulseSolver::applyRow(const ContactManifold& manifold, c
   b.angularVelocity += impulse * c.turnB[row];
 }
 
+// The normal row of a point, also added to the step's total there (what the
+// debugger shows as the contact's force): every normal impulse goes through
+// here, so the total is exactly what the bodies received.
+inline void SequentialImpulseSolver::applyNormal(const ContactManifold& manifold, const PointConstraint& c,
+                                                 ManifoldPoint& point, double impulse) {
+  applyRow(manifold, c, manifold.normal, 0, impulse);
+  point.stepNormalImpulse += impulse;
+}
+
 SolverStepReport SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                                std::vector<ContactManifold>& manifolds, double dt,
                                                const SolverSettings& settings, const Vec3& gravity) {
@@ -279,6 +288,7 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
                        : combineFriction(a.material().dynamicFriction, b.material().dynamicFriction);
       c.restitution = c.approachVelocity < -settings.restitutionThreshold ? restitution : 0.0;
       c.largestImpulse = 0.0;
+      point.stepNormalImpulse = 0.0;
       if (!settings.warmStarting) point.normalImpulse = point.tangentImpulse[0] = point.tangentImpulse[1] = 0.0;
     }
   }
@@ -315,13 +325,13 @@ void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& ma
   }
 }
 
-void SequentialImpulseSolver::warmStart(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) {
+void SequentialImpulseSolver::warmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island) {
   for (std::uint32_t m : island.manifolds) {
-    const ContactManifold& manifold = manifolds[m];
+    ContactManifold& manifold = manifolds[m];
     for (int p = 0; p < manifold.pointCount; ++p) {
-      const ManifoldPoint& point = manifold.points[p];
+      ManifoldPoint& point = manifold.points[p];
       const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-      applyRow(manifold, c, manifold.normal, 0, point.normalImpulse);
+      applyNormal(manifold, c, point, point.normalImpulse);
       applyRow(manifold, c, c.tangent[0], 1, point.tangentImpulse[0]);
       applyRow(manifold, c, c.tangent[1], 2, point.tangentImpulse[1]);
     }
@@ -347,7 +357,7 @@ void SequentialImpulseSolver::solveNormals(ContactManifold& manifold, std::size_
     const double normalVelocity = rowVelocity(manifold, c, manifold.normal, 0);
     const double impulse = -c.normalMass * massScale * (normalVelocity + bias) - impulseScale * point.normalImpulse;
     const double total = std::max(point.normalImpulse + impulse, 0.0);
-    applyRow(manifold, c, manifold.normal, 0, total - point.normalImpulse);
+    applyNormal(manifold, c, point, total - point.normalImpulse);
     point.normalImpulse = total;
     c.largestImpulse = std::max(c.largestImpulse, total);
   }
@@ -383,7 +393,7 @@ bool SequentialImpulseSolver::solveApproachTogether(ContactManifold& manifold, s
   for (int p = 0; p < count; ++p) {
     PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
     ManifoldPoint& point = manifold.points[p];
-    applyRow(manifold, c, manifold.normal, 0, change[p]);
+    applyNormal(manifold, c, point, change[p]);
     point.normalImpulse = std::max(point.normalImpulse + change[p], 0.0);
     c.largestImpulse = std::max(c.largestImpulse, point.normalImpulse);
   }
@@ -473,7 +483,7 @@ void SequentialImpulseSolver::applyRestitution(std::vector<ContactManifold>& man
       const double normalVelocity = rowVelocity(manifold, c, manifold.normal, 0);
       const double target = -c.restitution * c.approachVelocity;
       const double total = std::max(point.normalImpulse - c.normalMass * (normalVelocity - target), 0.0);
-      applyRow(manifold, c, manifold.normal, 0, total - point.normalImpulse);
+      applyNormal(manifold, c, point, total - point.normalImpulse);
       point.normalImpulse = total;
     }
   }

@@ -34,8 +34,9 @@ class SequentialImpulseSolver {
   // Advances every movable body by dt (velocities and positions) while
   // solving the manifolds. `movable[i]` false: body i is immovable this step
   // (static, asleep or frozen). Impulses in the manifolds warm-start the solve
-  // and hold the final ones afterwards. Gravity tells which contacts hold
-  // weight (resting_load.h).
+  // and hold the final ones afterwards (those of the island's last substep);
+  // each point's stepNormalImpulse holds the step's total. Gravity tells which
+  // contacts hold weight (resting_load.h).
   SolverStepReport step(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                         std::vector<ContactManifold>& manifolds, double dt, const SolverSettings& settings,
                         const Vec3& gravity);
@@ -93,7 +94,7 @@ class SequentialImpulseSolver {
   void storeVelocities(std::vector<RigidBody>& bodies, const ContactIsland& island) const;
   void loadPoses(const std::vector<RigidBody>& bodies, const ContactIsland& island);
   void measureGaps(const std::vector<ContactManifold>& manifolds, const ContactIsland& island);
-  void warmStart(const std::vector<ContactManifold>& manifolds, const ContactIsland& island);
+  void warmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island);
   void prepareApproaches(const std::vector<ContactManifold>& manifolds);
   void solveNormals(ContactManifold& manifold, std::size_t m, double substep, const Softness& softness, bool useBias,
                     bool reversed, const SolverSettings& settings);
@@ -109,6 +110,8 @@ class SequentialImpulseSolver {
                      int row) const;
   void applyRow(const ContactManifold& manifold, const PointConstraint& constraint, const Vec3& direction, int row,
                 double impulse);
+  void applyNormal(const ContactManifold& manifold, const PointConstraint& constraint, ManifoldPoint& point,
+                   double impulse);
 
   std::vector<SolverBody> solverBodies_;
   std::vector<PointConstraint> constraints_;      // maxPoints per manifold
