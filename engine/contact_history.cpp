@@ -65,7 +65,7 @@ std::vector<ShownContact> touchedPoints(const std::vector<ContactManifold>& mani
                         0.5 * (contact.pointA + contact.pointB),
                         manifold.normal,
                         std::max(0.0, -contact.separation),
-                        contact.normalImpulse,
+                        contact.stepNormalImpulse,  // the whole step's, so force = impulse / dt
                         false});
     }
   }

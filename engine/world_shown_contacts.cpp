@@ -7,29 +7,6 @@
 #include "engine/world.h"
 
 namespace physdbg {
-namespace {
-
-// touchedPoints() keeps the points the last substep pushed on or that touch
-// (as contact events judge them) with that substep's impulse; the debugger
-// shows each point's impulse over the whole step instead, so force = impulse
-// / dt whatever substeps its island took. Its points come in manifold order,
-// so one walk pairs each with its manifold point.
-std::vector<ShownContact> withStepImpulses(std::vector<ShownContact> points,
-                                           const std::vector<ContactManifold>& manifolds) {
-  std::size_t next = 0;
-  for (const ContactManifold& manifold : manifolds) {
-    const BodyPair pair{manifold.a, manifold.b};
-    for (int p = 0; p < manifold.pointCount && next < points.size(); ++p) {
-      const ManifoldPoint& point = manifold.points[p];
-      if (points[next].pair != pair || points[next].feature != point.featureId) continue;
-      points[next++].impulse = point.stepNormalImpulse;
-    }
-  }
-  return points;
-}
-
-}  // namespace
-
 std::vector<ShownContact> World::shownContacts() const {
   if (stepCount_ == 0) return mergeContacts(initialContacts(), resting_);
   return mergeContacts(keepHistory_ ? history_.points() : stepTouchedPoints(), resting_);
@@ -37,7 +14,7 @@ std::vector<ShownContact> World::shownContacts() const {
 
 std::vector<ShownContact> World::stepTouchedPoints() const {
   if (settings_.solver.kind == SolverKind::SequentialImpulse)
-    return withStepImpulses(touchedPoints(manifolds_, settings_.solver.linearSlop), manifolds_);
+    return touchedPoints(manifolds_, settings_.solver.linearSlop);
   return touchedPoints(contacts_);
 }
 
