@@ -16,8 +16,11 @@ void addOverlay(const SceneDescription& scene, const World& world, const Overlay
   const float scale = counters.imageWidth >= 800 ? 2.0f : 1.0f;
   out.texts.push_back({6 * scale, 5 * scale, scale, line, {1, 1, 1, 1}});
   const StepStats& stats = world.lastStepStats();
-  const int length = std::snprintf(line, sizeof line, "bodies %zu   pairs %d   contacts %d", world.bodyCount(),
-                                   stats.candidatePairs, contactPairCount(world.shownContacts()));
+  // Candidate pairs come from a step's broad phase: before the first step
+  // there are none to count, which "pairs 0" beside frame 0's contacts would hide.
+  const std::string pairs = world.stepCount() == 0 ? "-" : std::to_string(stats.candidatePairs);
+  const int length = std::snprintf(line, sizeof line, "bodies %zu   pairs %s   contacts %d", world.bodyCount(),
+                                   pairs.c_str(), contactPairCount(world.shownContacts()));
   if (counters.stepMs && length > 0 && static_cast<std::size_t>(length) < sizeof line)
     std::snprintf(line + length, sizeof line - length, "   step %.3f ms", *counters.stepMs);
   out.texts.push_back({6 * scale, 17 * scale, scale, line, {0.85f, 0.85f, 0.85f, 1}});

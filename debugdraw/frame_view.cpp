@@ -196,7 +196,7 @@ int addLabels(const Frame& tagged, const ViewSelection& selection, Frame& out) {
     }
     budget -= text.size();
     const Color color = highlighted.count(body->index) ? focusColor : Color{1, 1, 1, 1};
-    out.labels.push_back({centreOf(*body), 1.0f, text, color});
+    out.labels.push_back({centreOf(*body), 1.0f, text, color, Tag{}, true});
   }
   return leftOut;
 }

@@ -199,6 +199,10 @@ struct Label {
   std::string text;
   Color color;
   Tag tag;
+  // Left out when it would cover a label drawn before it: a crowd of body
+  // labels then reads instead of forming a white mass. Set by the viewer for
+  // body labels; not recorded (recorded labels, the grid's, always draw).
+  bool yieldsToEarlier = false;
 };
 
 // One body's state in a frame: what a viewer needs for --labels, --highlight,

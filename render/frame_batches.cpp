@@ -232,9 +232,9 @@ bool overlaps(const std::array<float, 4>& a, const std::array<float, 4>& b) {
 }
 
 // Labels in view, as screen-space text; every label is validated, seen or not.
-// A label that would cover one placed before it is left out: in a crowd a
-// few readable names beat an unreadable white mass, and producers put the
-// labels that matter most (highlighted bodies) first.
+// A label that yields (Label::yieldsToEarlier) is left out where it would
+// cover one placed before it: in a crowd a few readable names beat an
+// unreadable white mass, and the viewer puts highlighted bodies first.
 std::vector<debugdraw::Text> placedLabels(const debugdraw::Frame& frame, const Vector3d& origin,
                                           const ScreenMapping* screen) {
   std::vector<debugdraw::Text> placed;
@@ -246,7 +246,9 @@ std::vector<debugdraw::Text> placedLabels(const debugdraw::Frame& frame, const V
     if (!anchor) continue;
     debugdraw::Text text = labelText(label, *anchor);
     const std::array<float, 4> extent = textExtent(text);
-    if (std::any_of(taken.begin(), taken.end(), [&](const auto& other) { return overlaps(extent, other); })) continue;
+    if (label.yieldsToEarlier &&
+        std::any_of(taken.begin(), taken.end(), [&](const auto& other) { return overlaps(extent, other); }))
+      continue;
     taken.push_back(extent);
     placed.push_back(std::move(text));
   }
