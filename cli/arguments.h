@@ -52,6 +52,18 @@ class Arguments {
 
 std::string helpText(const CommandSpec& spec);
 
+// Runs `call`, reporting the viewer's std::invalid_argument (viewer/ knows no
+// UsageError: a degenerate camera, an unwritable frame) as a UsageError with
+// the same message.
+template <typename Call>
+decltype(auto) asUsageError(Call&& call) {
+  try {
+    return call();
+  } catch (const std::invalid_argument& error) {
+    throw UsageError(error.what());
+  }
+}
+
 // "1280x720" -> {1280, 720}, each side and the pixel count within limits.h;
 // throws UsageError naming `option`.
 std::pair<int, int> parseSize(const std::string& text, const std::string& option);

@@ -9,9 +9,10 @@
 #include "cli/numerical_faults.h"
 #include "cli/output_folder.h"
 #include "cli/progress_bar.h"
-#include "cli/scene_frames.h"
+#include "cli/view_options.h"
 #include "debugdraw/recording.h"
 #include "scenes/scene.h"
+#include "viewer/scene_frames.h"
 
 namespace physdbg::cli {
 namespace {
@@ -51,7 +52,8 @@ int runRecord(const std::vector<std::string>& args) {
   } catch (const std::runtime_error& error) {
     throw UsageError(std::string("-o: ") + error.what());
   }
-  SceneFrames frames(scene, options, FramePurpose::Record);
+  viewer::SceneFrames frames =
+      asUsageError([&] { return viewer::SceneFrames(scene, options, viewer::FramePurpose::Record); });
   ProgressBar progress("record " + scene.name, options.frames.count());
   for (int index = options.frames.first; index < options.frames.last; ++index) {
     writer->write(frames.frame(index));
@@ -65,7 +67,7 @@ int runRecord(const std::vector<std::string>& args) {
   progress.finish();
   std::printf("recorded frames %d..%d of %s to %s\n", options.frames.first, options.frames.last - 1,
               scene.name.c_str(), path.c_str());
-  reportBlankLayers("record", options, frames.layerCounts());
+  viewer::reportBlankLayers("record", options, frames.layerCounts());
   return reportNumericalFaults("record", frames.world());
 }
 

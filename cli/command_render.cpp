@@ -12,12 +12,13 @@
 #include "cli/commands.h"
 #include "cli/numerical_faults.h"
 #include "cli/output_folder.h"
-#include "cli/png_writer_pool.h"
 #include "cli/progress_bar.h"
-#include "cli/scene_frames.h"
+#include "cli/view_options.h"
 #include "render/renderer.h"
 #include "reports/child_process.h"
 #include "scenes/scene.h"
+#include "viewer/png_writer_pool.h"
+#include "viewer/scene_frames.h"
 
 namespace physdbg::cli {
 namespace {
@@ -110,10 +111,10 @@ int runRender(const std::vector<std::string>& args) {
   prepareOutputDirectory(outputDirectory);
   removeEarlierFrames(outputDirectory, options.frames);
 
-  SceneFrames frames(scene, options);
+  viewer::SceneFrames frames = asUsageError([&] { return viewer::SceneFrames(scene, options); });
   render::Renderer renderer({options.width, options.height, options.samples, readBackend(*parsed)});
-  const PoolSize pool = framePoolSize(options.width, options.height);
-  PngWriterPool writers(pool, "-o");
+  const viewer::PoolSize pool = viewer::framePoolSize(options.width, options.height);
+  viewer::PngWriterPool writers(pool, "-o");
   ProgressBar progress("render " + scene.name, options.frames.count());
 
   double drawSeconds = 0;
@@ -121,12 +122,12 @@ int runRender(const std::vector<std::string>& args) {
   for (int index = options.frames.first; index < options.frames.last; ++index) {
     const debugdraw::RecordedFrame frame = frames.frame(index);
     const auto start = Clock::now();
-    render::Image image = renderer.render(frame.frame, toCamera(frame.view));
+    render::Image image = renderer.render(frame.frame, viewer::toCamera(frame.view));
     drawSeconds += secondsSince(start);
-    writers.submit(framePath(outputDirectory, index), std::move(image));
+    asUsageError([&] { writers.submit(framePath(outputDirectory, index), std::move(image)); });
     progress.update(index - options.frames.first + 1);
   }
-  writers.finish();
+  asUsageError([&] { writers.finish(); });
   progress.finish();
   const double wall = secondsSince(wallStart);
 
@@ -140,8 +141,8 @@ int runRender(const std::vector<std::string>& args) {
     encodeVideo(ffmpeg, outputDirectory, video, 1.0 / (scene.world.dt * options.stepsPerFrame), options.frames);
     std::printf("wrote video %s\n", video.c_str());
   }
-  reportBlankLayers("render", options, frames.layerCounts());
-  reportLabelsLeftOut("render", frames.labelsLeftOut());
+  viewer::reportBlankLayers("render", options, frames.layerCounts());
+  viewer::reportLabelsLeftOut("render", frames.labelsLeftOut());
   return reportNumericalFaults("render", frames.world());
 }
 

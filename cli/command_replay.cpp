@@ -9,12 +9,12 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/output_folder.h"
-#include "cli/png_writer_pool.h"
-#include "cli/scene_camera.h"
-#include "cli/scene_frames.h"
 #include "cli/view_options.h"
 #include "debugdraw/recording.h"
 #include "render/renderer.h"
+#include "viewer/png_writer_pool.h"
+#include "viewer/scene_camera.h"
+#include "viewer/scene_frames.h"
 
 namespace physdbg::cli {
 namespace {
@@ -59,7 +59,7 @@ ReplayView readReplayView(const Arguments& arguments) {
   ViewOptions& options = view.options;
   std::tie(options.width, options.height) = parseSize(arguments.value("--size", "1280x720"), "--size");
   if (arguments.has("--layers")) view.layers = readLayerList(arguments.value("--layers"), "--layers");
-  options.layers = view.layers.value_or(allLayerSet());
+  options.layers = view.layers.value_or(viewer::allLayerSet());
   readTreeDepth(arguments, options, view.layers ? "--layers" : "the recording");
   options.camera = readCameraOptions(arguments);
   options.highlight = readHighlight(arguments);
@@ -96,7 +96,7 @@ class ReplayViewer {
     } catch (const std::invalid_argument& error) {
       throw UsageError("frame " + std::to_string(recorded.index) + ": " + error.what());
     }
-    shown.view = toView(camera(recorded));
+    shown.view = viewer::toView(camera(recorded));
     return shown;
   }
   int labelsLeftOut() const { return labelsLeftOut_; }
@@ -112,13 +112,14 @@ class ReplayViewer {
   }
 
   render::Camera camera(const debugdraw::RecordedFrame& recorded) {
-    if (!view_.options.camera.any()) return toCamera(recorded.view);
+    if (!view_.options.camera.any()) return viewer::toCamera(recorded.view);
     const debugdraw::BodyInfo* body = followed(recorded);
     if (!initialCamera_) {
       const double aspect = static_cast<double>(view_.options.width) / view_.options.height;
-      initialCamera_ = applyCameraOptions(toCamera(recorded.view), view_.options.camera, body, aspect);
+      initialCamera_ = asUsageError(
+          [&] { return viewer::applyCameraOptions(viewer::toCamera(recorded.view), view_.options.camera, body, aspect); });
     }
-    return body ? followBody(*initialCamera_, *body) : *initialCamera_;
+    return body ? viewer::followBody(*initialCamera_, *body) : *initialCamera_;
   }
 
   ReplayView view_;
@@ -154,23 +155,24 @@ int runReplay(const std::vector<std::string>& args) {
   const int width = view.options.width, height = view.options.height;
   debugdraw::RecordingReader reader(parsed->positional()[0]);
   checkTagged(reader, view, parsed->positional()[0]);
-  ReplayViewer viewer(view, reader.version());
+  ReplayViewer replayViewer(view, reader.version());
   const std::string directory = parsed->value("--output");
   prepareOutputDirectory(directory);
 
   render::Renderer renderer({width, height, view.options.samples, readBackend(*parsed)});
-  PngWriterPool writers(framePoolSize(width, height), "-o");
+  viewer::PngWriterPool writers(viewer::framePoolSize(width, height), "-o");
   debugdraw::RecordedFrame frame;
   int written = 0;
   while (reader.next(frame, range.first, range.last)) {
-    const debugdraw::RecordedFrame shown = viewer.show(frame);
-    writers.submit(framePath(directory, frame.index), renderer.render(shown.frame, toCamera(shown.view)));
+    const debugdraw::RecordedFrame shown = replayViewer.show(frame);
+    render::Image image = renderer.render(shown.frame, viewer::toCamera(shown.view));
+    asUsageError([&] { writers.submit(framePath(directory, frame.index), std::move(image)); });
     ++written;
   }
-  writers.finish();
+  asUsageError([&] { writers.finish(); });
   checkSomethingReplayed(written, parsed->positional()[0], *parsed);
   std::printf("replayed %d frames to %s\n", written, directory.c_str());
-  reportLabelsLeftOut("replay", viewer.labelsLeftOut());
+  viewer::reportLabelsLeftOut("replay", replayViewer.labelsLeftOut());
   return 0;
 }
 

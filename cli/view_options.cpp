@@ -137,19 +137,6 @@ int readSamples(const Arguments& arguments) {
   return std::stoi(text);
 }
 
-debugdraw::ViewSelection selectionOf(const ViewOptions& options) {
-  debugdraw::ViewSelection selection;
-  selection.layers = options.layers;
-  selection.treeMinDepth = options.treeMinDepth;
-  selection.treeMaxDepth = options.treeMaxDepth;
-  selection.highlight = options.highlight;
-  selection.labels = options.labels;
-  selection.follow = options.camera.follow;
-  selection.imageWidth = options.width;
-  selection.imageHeight = options.height;
-  return selection;
-}
-
 std::vector<OptionSpec> recordViewOptionSpecs() {
   std::vector<OptionSpec> specs;
   for (const OptionSpec& spec : viewOptionSpecs()) {

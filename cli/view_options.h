@@ -1,7 +1,7 @@
 #pragma once
 // Options shared by `render` and `record`: which frames, which layers, and
-// where the camera looks from. Parsed once, validated before any work.
-#include <optional>
+// where the camera looks from (viewer/view_options.h). Parsed once, validated
+// before any work.
 #include <utility>
 #include <vector>
 
@@ -10,39 +10,15 @@
 #include "debugdraw/primitives.h"
 #include "render/renderer.h"
 #include "scenes/scene.h"
+#include "viewer/view_options.h"
 
 namespace physdbg::cli {
 
-struct FrameRange {
-  int first = 0, last = 0;  // frames first .. last-1
-  // Given as A:B: a slice of a run that other processes may be drawing into
-  // the same folder, so this run owns only its own frames there.
-  bool slice = false;
-  int count() const { return last - first; }
-};
-
-// Where the camera looks from; each unset value keeps the framed (or recorded) view's.
-struct CameraOptions {
-  std::optional<int> follow;  // body index
-  std::optional<Vec3> eye, target;
-  std::optional<double> fovYDegrees;
-  bool orthographic = false;
-  bool any() const { return follow || eye || target || fovYDegrees || orthographic; }
-};
-
-struct ViewOptions {
-  FrameRange frames;
-  int runFrames = 0;  // frames in the whole run, of which `frames` may be a slice: the overlay's "of N"
-  int stepsPerFrame = 1;
-  int width = 1280, height = 720;
-  debugdraw::LayerSet layers;
-  int treeMinDepth = 0, treeMaxDepth = 1 << 30;
-  CameraOptions camera;
-  std::vector<int> highlight;  // body indices in focus
-  bool labels = false;
-  int samples = 0;  // MSAA samples per pixel
-  bool timing = true;  // measured step time in the overlay (off: byte-identical frames run after run)
-};
+// The plain option structs live with the viewer that draws them.
+using viewer::CameraOptions;
+using viewer::FrameRange;
+using viewer::selectionOf;
+using viewer::ViewOptions;
 
 // The option rows for a CommandSpec: every view option (render), or those a
 // recording's replay can still change: layers, focus, camera (replay).
@@ -50,10 +26,6 @@ std::vector<OptionSpec> viewOptionSpecs();
 std::vector<OptionSpec> replayViewOptionSpecs();
 // `record` keeps every layer and body: focus and labels are chosen at replay.
 std::vector<OptionSpec> recordViewOptionSpecs();
-
-// --layers, --tree-depth, --highlight, --labels, --follow and the camera as a
-// viewer applies them (debugdraw/frame_view.h).
-debugdraw::ViewSelection selectionOf(const ViewOptions& options);
 
 // The camera options alone (replay: no scene to check --follow against).
 CameraOptions readCameraOptions(const Arguments& arguments);

@@ -2,9 +2,9 @@
 
 #include <stdexcept>
 
-#include "cli/frame_renderer.h"
-#include "cli/tree_view.h"
 #include "scenes/stacking_scenes.h"
+#include "viewer/frame_renderer.h"
+#include "viewer/tree_view.h"
 
 namespace physdbg::golden {
 namespace {
@@ -31,11 +31,11 @@ std::function<render::Image(render::Renderer&)> viewed(std::function<SceneDescri
                                                        const std::string& layers, std::vector<int> highlight = {},
                                                        bool labels = false) {
   return [=](render::Renderer& renderer) {
-    cli::ViewOptions options;
+    viewer::ViewOptions options;
     options.layers = debugdraw::parseLayers(layers);
     options.highlight = highlight;
     options.labels = labels;
-    return cli::renderViewFrame(renderer, scene(), frame, options);
+    return viewer::renderViewFrame(renderer, scene(), frame, options);
   };
 }
 
@@ -57,7 +57,7 @@ const std::vector<GoldenCase>& goldenCases() {
       // The tree-rotation view: the first insertion of a small pyramid's boxes
       // that rotates the tree, after the swap (highlighted subtrees, diagram).
       {"tree_rotation_pyramid", [] { return pyramidScene(4); }, 0, "",
-       [](render::Renderer& renderer) { return cli::renderTreeRotationFrame(pyramidScene(4), 0, true, renderer); }},
+       [](render::Renderer& renderer) { return viewer::renderTreeRotationFrame(pyramidScene(4), 0, true, renderer); }},
       // One body in focus: body 5 of a small pyramid emphasised with its
       // contacts, pairs and tree path (gold), the rest faded, every body labelled.
       {"pyramid_highlight_labels", closeUp(pyramid, 4, Vec3(0, 1.8, 0), 8.5), 30, "shapes,overlay",
@@ -72,7 +72,7 @@ const std::vector<GoldenCase>& goldenCases() {
 
 render::Image renderGoldenCase(const GoldenCase& golden, render::Renderer& renderer) {
   if (golden.draw) return golden.draw(renderer);
-  return cli::renderSceneFrame(renderer, golden.scene(), golden.steps, debugdraw::parseLayers(golden.layers));
+  return viewer::renderSceneFrame(renderer, golden.scene(), golden.steps, debugdraw::parseLayers(golden.layers));
 }
 
 const GoldenCase& goldenCase(const std::string& name) {

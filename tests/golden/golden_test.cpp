@@ -9,11 +9,11 @@
 #include <iterator>
 #include <sstream>
 
-#include "cli/frame_renderer.h"
 #include "render/image_compare.h"
 #include "tests/golden/golden_cases.h"
 #include "tests/golden/golden_store.h"
 #include "tests/golden/html_report.h"
+#include "viewer/frame_renderer.h"
 
 namespace physdbg::golden {
 
@@ -103,12 +103,12 @@ class GoldenRegression : public ::testing::Test {
  protected:
   const GoldenCase& golden = goldenCase("stack_aabbs_contacts");
   const SceneDescription scene = golden.scene();
-  const render::Camera camera = cli::sceneCamera(scene, double(kWidth) / kHeight);
-  const World world = cli::simulateScene(scene, golden.steps);
+  const render::Camera camera = viewer::sceneCamera(scene, double(kWidth) / kHeight);
+  const World world = viewer::simulateScene(scene, golden.steps);
   const render::Image reference = renderCase(golden);
 
   render::Image draw(const World& drawn, const std::string& layers) {
-    return sharedRenderer().render(cli::sceneFrame(scene, drawn, debugdraw::parseLayers(layers)), camera);
+    return sharedRenderer().render(viewer::sceneFrame(scene, drawn, debugdraw::parseLayers(layers)), camera);
   }
 
   // World length of `pixels` pixels at the camera target's distance.
@@ -133,7 +133,7 @@ TEST_F(GoldenRegression, UnchangedSceneRenderedAgainPasses) {
 }
 
 TEST_F(GoldenRegression, BodyMovedByThreePixelsFails) {
-  World moved = cli::simulateScene(scene, golden.steps);
+  World moved = viewer::simulateScene(scene, golden.steps);
   const BodyId top = static_cast<BodyId>(moved.bodyCount() - 1);
   moved.body(top).setPosition(moved.body(top).position() + Vec3(worldLength(3), 0, 0));
   const render::CompareResult result = render::compareImages(reference, draw(moved, golden.layers));
@@ -146,7 +146,7 @@ TEST_F(GoldenRegression, DroppedContactsLayerFails) {
 }
 
 TEST_F(GoldenRegression, ChangedBoxColourFails) {
-  debugdraw::Frame frame = cli::sceneFrame(scene, world, debugdraw::parseLayers(golden.layers));
+  debugdraw::Frame frame = viewer::sceneFrame(scene, world, debugdraw::parseLayers(golden.layers));
   ASSERT_GE(frame.boxes.size(), 2u);
   debugdraw::Color& colour = frame.boxes.back().color;
   colour.r = colour.r > 0.5f ? colour.r - 0.15f : colour.r + 0.15f;

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <set>
 
-#include "cli/frame_renderer.h"
 #include "tests/golden/golden_cases.h"
 #include "tests/golden/golden_store.h"
+#include "viewer/frame_renderer.h"
 
 namespace fs = std::filesystem;
 using namespace physdbg;

@@ -6,16 +6,16 @@
 #include <algorithm>
 #include <random>
 
-#include "cli/pixel_canvas.h"
-#include "cli/tree_diagram.h"
-#include "cli/tree_snapshot.h"
 #include "render/renderer.h"
 #include "render_test_support.h"
+#include "viewer/pixel_canvas.h"
+#include "viewer/tree_diagram.h"
+#include "viewer/tree_snapshot.h"
 
 namespace {
 
 using namespace physdbg;
-using physdbg::cli::TreeSnapshot;
+using physdbg::viewer::TreeSnapshot;
 
 double internalArea(const TreeSnapshot& tree) {
   double area = 0;
@@ -62,10 +62,10 @@ std::vector<Insertion> rotatingInsertions() {
     tree.createProxy(Aabb::fromCenterHalfExtents(center, Vec3::Constant(0.5)), static_cast<std::uint32_t>(i));
     if (tree.rotationLog().empty()) continue;
     Insertion insertion;
-    insertion.after = cli::snapshotTree(tree);
+    insertion.after = viewer::snapshotTree(tree);
     insertion.before = insertion.after;
     insertion.rotations = tree.rotationLog();
-    cli::undoRotations(insertion.before, insertion.rotations);
+    viewer::undoRotations(insertion.before, insertion.rotations);
     result.push_back(std::move(insertion));
   }
   return result;
@@ -77,7 +77,7 @@ TEST(TreeView, SnapshotMatchesTheTreesOwnFigures) {
   std::uniform_real_distribution<double> coordinate(-10, 10);
   for (int i = 0; i < 50; ++i)
     tree.createProxy(Aabb::fromCenterHalfExtents({coordinate(random), coordinate(random), 0}, Vec3::Constant(0.3)), 0);
-  const TreeSnapshot snapshot = cli::snapshotTree(tree);
+  const TreeSnapshot snapshot = viewer::snapshotTree(tree);
   EXPECT_NEAR(snapshot.surfaceAreaRatio(), tree.surfaceAreaRatio(), 1e-12 * tree.surfaceAreaRatio());
   EXPECT_EQ(snapshot.height(), tree.height());
   EXPECT_EQ(leaves(snapshot).size(), 50u);
@@ -116,15 +116,15 @@ TEST(TreeView, UndoingRotationsGivesTheLargerUnrotatedTree) {
 TEST(TreeView, UndoRefusesEventsForOtherTrees) {
   DynamicAabbTree tree;
   tree.createProxy(Aabb::fromCenterHalfExtents(Vec3::Zero(), Vec3::Ones()), 0);
-  TreeSnapshot snapshot = cli::snapshotTree(tree);
+  TreeSnapshot snapshot = viewer::snapshotTree(tree);
   RotationEvent event;
   event.node = 0, event.first = 5, event.second = 9;
-  EXPECT_THROW(cli::undoRotations(snapshot, {event}), std::invalid_argument);
+  EXPECT_THROW(viewer::undoRotations(snapshot, {event}), std::invalid_argument);
 }
 
 TEST(TreeView, DiagramShowsTheSwappedSubtreesInTheirColours) {
   const Insertion insertion = rotatingInsertions().front();
-  cli::TreeHighlight highlight;
+  viewer::TreeHighlight highlight;
   for (const RotationEvent& rotation : insertion.rotations) {
     highlight.movedDown.push_back(rotation.first);
     highlight.movedUp.push_back(rotation.second);
@@ -133,8 +133,8 @@ TEST(TreeView, DiagramShowsTheSwappedSubtreesInTheirColours) {
   render::Renderer renderer({width, height, 0});
   auto count = [&](const TreeSnapshot& tree, debugdraw::Color color) {
     debugdraw::Frame frame;
-    cli::drawTreeDiagram(tree, highlight, 0, 0, width, height, frame);
-    const render::Image image = renderer.render(frame, cli::pixelCamera(width, height));
+    viewer::drawTreeDiagram(tree, highlight, 0, 0, width, height, frame);
+    const render::Image image = renderer.render(frame, viewer::pixelCamera(width, height));
     int matches = 0;
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) {
@@ -144,11 +144,11 @@ TEST(TreeView, DiagramShowsTheSwappedSubtreesInTheirColours) {
       }
     return matches;
   };
-  EXPECT_GT(count(insertion.after, cli::treecolors::movedDown), 20);
-  EXPECT_GT(count(insertion.before, cli::treecolors::movedUp), 20);
-  cli::TreeHighlight none;
+  EXPECT_GT(count(insertion.after, viewer::treecolors::movedDown), 20);
+  EXPECT_GT(count(insertion.before, viewer::treecolors::movedUp), 20);
+  viewer::TreeHighlight none;
   highlight = none;
-  EXPECT_LT(count(insertion.after, cli::treecolors::movedDown), 3);
+  EXPECT_LT(count(insertion.after, viewer::treecolors::movedDown), 3);
 }
 
 }  // namespace

@@ -150,7 +150,7 @@ TEST(WireLayer, DrawsASphereAsACircleNotItsBoundingBox) {
 // frame: the initial contacts in frame 0, an impact that began and ended
 // between two frames, and the contacts a sleeping pile rests on (dimmed).
 // Frames come from the debugger's own frame source.
-#include "cli/scene_frames.h"
+#include "viewer/scene_frames.h"
 
 namespace {
 
@@ -158,7 +158,7 @@ constexpr int smallWidth = 160, smallHeight = 120;
 
 physdbg::render::Image renderSceneFrame(const physdbg::SceneDescription& scene, const char* layers, int index,
                                         int stepsPerFrame = 1) {
-  physdbg::cli::ViewOptions options;
+  physdbg::viewer::ViewOptions options;
   options.frames = {0, index + 1};
   options.runFrames = index + 1;
   options.stepsPerFrame = stepsPerFrame;
@@ -166,9 +166,9 @@ physdbg::render::Image renderSceneFrame(const physdbg::SceneDescription& scene, 
   options.height = smallHeight;
   options.layers = dd::parseLayers(layers);
   options.timing = false;
-  physdbg::cli::SceneFrames frames(scene, options);
+  physdbg::viewer::SceneFrames frames(scene, options);
   const dd::RecordedFrame frame = frames.frame(index);
-  return physdbg::render::Renderer({smallWidth, smallHeight, 0}).render(frame.frame, physdbg::cli::toCamera(frame.view));
+  return physdbg::render::Renderer({smallWidth, smallHeight, 0}).render(frame.frame, physdbg::viewer::toCamera(frame.view));
 }
 
 dd::Color dimmed(dd::Color color) { return {color.r * 0.5f, color.g * 0.5f, color.b * 0.5f, color.a}; }

@@ -6,7 +6,7 @@
 
 #include "debugdraw/primitives.h"
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 
 struct PlotSeries {
   std::string name;
@@ -24,4 +24,4 @@ struct PlotArea {
 void drawLinePlot(const std::string& title, const std::string& xLabel, const std::vector<PlotSeries>& series,
                   const PlotArea& area, debugdraw::Frame& frame);
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

@@ -3,14 +3,14 @@
 // debug layers (with an overlay free of wall-clock values) and render them.
 // Shared by golden-image tests and their update tool; the pieces are separate
 // so tests can perturb the world or the frame before drawing.
-#include "cli/scene_frames.h"
+#include "viewer/scene_frames.h"
 #include "debugdraw/primitives.h"
 #include "render/camera.h"
 #include "render/image.h"
 #include "render/renderer.h"
 #include "scenes/scene.h"
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 
 // Throws std::invalid_argument for negative steps, SceneError for a bad scene.
 World simulateScene(const SceneDescription& scene, int steps);
@@ -33,4 +33,4 @@ render::Image renderViewFrame(render::Renderer& renderer, const SceneDescription
 render::Image renderSceneFrame(render::Renderer& renderer, const SceneDescription& scene, int steps,
                                debugdraw::LayerSet layers);
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

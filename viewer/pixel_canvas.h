@@ -6,7 +6,7 @@
 #include "render/camera.h"
 #include "render/image.h"
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 
 inline debugdraw::Vec3 pixelPoint(double x, double y) { return {x, -y, 0.0}; }
 
@@ -30,4 +30,4 @@ inline debugdraw::SolidBox pixelRectangle(double x, double y, double halfWidth, 
 // gap is filled with the left image's top-left pixel.
 render::Image sideBySide(const render::Image& left, const render::Image& right);
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

@@ -1,12 +1,11 @@
-#include "cli/png_writer_pool.h"
+#include "viewer/png_writer_pool.h"
 
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
-#include "cli/arguments.h"
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 
 PoolSize framePoolSize(int width, int height) {
   constexpr std::size_t maxQueuedBytes = std::size_t{1} << 30;
@@ -70,7 +69,7 @@ void PngWriterPool::work() {
     try {
       render::writePng(job.path, job.image);
     } catch (const std::runtime_error& error) {
-      failure = std::make_exception_ptr(UsageError(option_ + ": " + error.what()));
+      failure = std::make_exception_ptr(std::invalid_argument(option_ + ": " + error.what()));
     } catch (...) {
       failure = std::current_exception();
     }
@@ -85,4 +84,4 @@ void PngWriterPool::work() {
   }
 }
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

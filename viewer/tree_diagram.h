@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "cli/tree_snapshot.h"
 #include "debugdraw/primitives.h"
+#include "viewer/tree_snapshot.h"
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 
 // Colours with a meaning in the tree view.
 namespace treecolors {
@@ -39,4 +39,4 @@ void drawTreeDiagram(const TreeSnapshot& tree, const TreeHighlight& highlight, d
 // subtrees in their colours. Elsewhere only the leaves, as faint wire.
 void drawTreeBoxes(const TreeSnapshot& tree, const TreeHighlight& highlight, double margin, debugdraw::Frame& frame);
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

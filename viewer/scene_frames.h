@@ -5,12 +5,12 @@
 // are simulated but not drawn, so a split run matches one long run.
 #include <optional>
 
-#include "cli/view_options.h"
 #include "debugdraw/recording.h"
 #include "render/camera.h"
 #include "scenes/scene.h"
+#include "viewer/view_options.h"
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 
 // Show: the frame as drawn, with the options' layers, focus and labels applied.
 // Record: every layer, tagged, with each body's state, so a replay can choose
@@ -70,4 +70,4 @@ void reportLabelsLeftOut(const std::string& command, int leftOut);
 render::Camera toCamera(const debugdraw::View& view);
 debugdraw::View toView(const render::Camera& camera);
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

@@ -1,9 +1,9 @@
-#include "cli/tree_snapshot.h"
+#include "viewer/tree_snapshot.h"
 
 #include <algorithm>
 #include <stdexcept>
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 namespace {
 
 constexpr int none = DynamicAabbTree::nullNode;
@@ -120,4 +120,4 @@ std::vector<int> TreeSnapshot::depths() const {
   return depth;
 }
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

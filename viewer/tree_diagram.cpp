@@ -1,11 +1,11 @@
-#include "cli/tree_diagram.h"
+#include "viewer/tree_diagram.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "cli/pixel_canvas.h"
+#include "viewer/pixel_canvas.h"
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 namespace {
 
 namespace dd = debugdraw;
@@ -139,4 +139,4 @@ void drawTreeBoxes(const TreeSnapshot& tree, const TreeHighlight& highlight, dou
   outline(highlight.reshaped, 1.015, treecolors::reshaped);
 }
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

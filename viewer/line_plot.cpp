@@ -1,13 +1,13 @@
-#include "cli/line_plot.h"
+#include "viewer/line_plot.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
-#include "cli/pixel_canvas.h"
+#include "viewer/pixel_canvas.h"
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 namespace {
 
 namespace dd = debugdraw;
@@ -75,4 +75,4 @@ void drawLinePlot(const std::string& title, const std::string& xLabel, const std
   }
 }
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

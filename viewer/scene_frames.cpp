@@ -1,4 +1,4 @@
-#include "cli/scene_frames.h"
+#include "viewer/scene_frames.h"
 
 #include <algorithm>
 #include <chrono>
@@ -8,13 +8,12 @@
 #include <utility>
 #include <stdexcept>
 
-#include "cli/arguments.h"
-#include "cli/scene_camera.h"
-#include "cli/scene_overlay.h"
 #include "debugdraw/frame_view.h"
 #include "debugdraw/ground_grid.h"
+#include "viewer/scene_camera.h"
+#include "viewer/scene_overlay.h"
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 namespace {
 
 namespace dd = debugdraw;
@@ -208,4 +207,4 @@ void reportBlankLayers(const std::string& command, const ViewOptions& options, c
   }
 }
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

@@ -12,7 +12,7 @@
 
 #include "render/image.h"
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 
 struct PoolSize {
   int workers = 1;
@@ -26,8 +26,9 @@ PoolSize framePoolSize(int width, int height);
 
 class PngWriterPool {
  public:
-  // A frame that cannot be written fails the run as a UsageError naming
-  // `option` (the output folder's option) and the file.
+  // A frame that cannot be written fails the run as a std::invalid_argument
+  // naming `option` (the output folder's option) and the file; cli/ reports
+  // it as a usage error.
   PngWriterPool(PoolSize size, std::string option);
   ~PngWriterPool();  // waits for queued frames
   PngWriterPool(const PngWriterPool&) = delete;
@@ -60,4 +61,4 @@ class PngWriterPool {
   std::vector<std::jthread> workers_;
 };
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

@@ -1,9 +1,9 @@
-#include "cli/scene_overlay.h"
+#include "viewer/scene_overlay.h"
 
 #include <cstdio>
 #include <string>
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 
 void addOverlay(const SceneDescription& scene, const World& world, const OverlayCounters& counters,
                 debugdraw::Frame& out) {
@@ -26,4 +26,4 @@ void addOverlay(const SceneDescription& scene, const World& world, const Overlay
   out.texts.push_back({6 * scale, 17 * scale, scale, line, {0.85f, 0.85f, 0.85f, 1}});
 }
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

@@ -1,13 +1,13 @@
-#include "cli/frame_renderer.h"
+#include "viewer/frame_renderer.h"
 
 #include <stdexcept>
 #include <string>
 
-#include "cli/scene_camera.h"
-#include "cli/scene_overlay.h"
 #include "debugdraw/frame_view.h"
+#include "viewer/scene_camera.h"
+#include "viewer/scene_overlay.h"
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 
 World simulateScene(const SceneDescription& scene, int steps) {
   if (steps < 0) throw std::invalid_argument("simulateScene: steps must be >= 0, got " + std::to_string(steps));
@@ -60,4 +60,4 @@ render::Image renderSceneFrame(render::Renderer& renderer, const SceneDescriptio
   return renderer.render(sceneFrame(scene, world, layers, renderer.options().width), sceneCamera(scene, aspect));
 }
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

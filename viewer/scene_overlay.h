@@ -6,7 +6,7 @@
 #include "debugdraw/primitives.h"
 #include "scenes/scene.h"
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 
 struct OverlayCounters {
   // "frame 3 of 60" when both are given: `frames` counts the whole run, not
@@ -19,4 +19,4 @@ struct OverlayCounters {
 void addOverlay(const SceneDescription& scene, const World& world, const OverlayCounters& counters,
                 debugdraw::Frame& out);
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

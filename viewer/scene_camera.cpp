@@ -1,12 +1,11 @@
-#include "cli/scene_camera.h"
+#include "viewer/scene_camera.h"
 
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
-#include "cli/arguments.h"
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 
 render::Camera chooseCamera(const SceneDescription& scene, const debugdraw::Frame& firstFrame, double aspect) {
   const render::Bounds bounds = render::frameBounds(firstFrame);
@@ -57,7 +56,7 @@ render::Camera applyCameraOptions(render::Camera camera, const CameraOptions& op
   try {
     render::validateCamera(camera);
   } catch (const std::invalid_argument& error) {
-    throw UsageError(std::string("camera: ") + error.what());
+    throw std::invalid_argument(std::string("camera: ") + error.what());
   }
   return camera;
 }
@@ -69,4 +68,4 @@ render::Camera followBody(render::Camera camera, const debugdraw::BodyInfo& foll
   return camera;
 }
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

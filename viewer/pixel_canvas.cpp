@@ -1,10 +1,10 @@
-#include "cli/pixel_canvas.h"
+#include "viewer/pixel_canvas.h"
 
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 
 render::Image sideBySide(const render::Image& left, const render::Image& right) {
   for (const render::Image* image : {&left, &right})
@@ -26,4 +26,4 @@ render::Image sideBySide(const render::Image& left, const render::Image& right) 
   return result;
 }
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer

@@ -6,7 +6,7 @@
 
 #include "engine/broadphase/dynamic_aabb_tree.h"
 
-namespace physdbg::cli {
+namespace physdbg::viewer {
 
 struct TreeSnapshot {
   struct Node {
@@ -35,4 +35,4 @@ TreeSnapshot snapshotTree(const DynamicAabbTree& tree);
 // an event names nodes the snapshot does not hold.
 void undoRotations(TreeSnapshot& snapshot, const std::vector<RotationEvent>& events);
 
-}  // namespace physdbg::cli
+}  // namespace physdbg::viewer
