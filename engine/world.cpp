@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
 #include "engine/broadphase/brute_force_broad_phase.h"
 #include "engine/broadphase/tree_broad_phase.h"
+#include "engine/disjoint_sets.h"
 #include "engine/narrowphase/narrow_phase.h"
 
 namespace physdbg {
@@ -45,6 +47,7 @@ BodyId World::addBody(const BodyDefinition& definition) {
   frozen_.push_back(false);
   asleep_.push_back(false);
   slowTime_.push_back(0.0);
+  island_.push_back(id);
   return id;
 }
 
@@ -75,13 +78,23 @@ void World::step() {
   }
   events_.update(eventContacts(), dormantPairs(), listener_);
   if (keepHistory_) history_.add(stepTouchedPoints());
+  linkIslands();
   keepRestingContacts(updateSleep());
   freezeNonFiniteBodies();
   ++stepCount_;
 }
 
+// An island fell asleep together, so it wakes together: a body left asleep
+// beside a woken neighbour would hold no contacts with it (sleeping proxies
+// make no pairs) until the next touch woke it a step late.
 void World::wake(BodyId id) {
   if (!asleep_.at(id)) return;
+  const BodyId island = island_[id];
+  for (BodyId member = 0; member < bodies_.size(); ++member)
+    if (asleep_[member] && island_[member] == island) wakeBody(member);
+}
+
+void World::wakeBody(BodyId id) {
   asleep_[id] = false;
   slowTime_[id] = 0.0;
   if (proxies_[id] >= 0) broadPhase_->setProxyActive(proxies_[id], true);
@@ -94,14 +107,13 @@ void World::putToSleep(BodyId id) {
   broadPhase_->setProxyActive(proxies_[id], false);
 }
 
+// Wakes come first: a pushed body wakes its whole island, bodies before it
+// in id order included, and each of them must then begin the step awake.
 void World::applyForces() {
+  wakePushedBodies();
   for (BodyId id = 0; id < bodies_.size(); ++id) {
     RigidBody& body = bodies_[id];
     if (frozen_[id] || body.isStatic()) continue;
-    // A sleeping body that was pushed or given a velocity wakes up.
-    if (asleep_[id] && (body.hasPendingForces() || body.linearVelocity() != Vec3::Zero() ||
-                        body.angularVelocity() != Vec3::Zero()))
-      wake(id);
     if (asleep_[id]) {
       ++stats_.sleepingBodies;
       continue;
@@ -109,6 +121,16 @@ void World::applyForces() {
     body.beginStep(settings_.gravity);
     ++stats_.awakeBodies;
     if (body.hasLocks()) ++stats_.lockedBodies;
+  }
+}
+
+// A sleeping body that was pushed or given a velocity wakes up.
+void World::wakePushedBodies() {
+  for (BodyId id = 0; id < bodies_.size(); ++id) {
+    const RigidBody& body = bodies_[id];
+    if (!asleep_[id] || frozen_[id]) continue;
+    if (body.hasPendingForces() || body.linearVelocity() != Vec3::Zero() || body.angularVelocity() != Vec3::Zero())
+      wake(id);
   }
 }
 
@@ -325,9 +347,19 @@ void World::integratePositions() {
   }
 }
 
-// A body sleeps when it and every awake body it touches have been slow for
-// timeToSleep, so a resting pile falls asleep together.
-bool World::updateSleep() {
+// Islands: awake bodies joined by this step's touching contacts. Static,
+// sleeping and frozen bodies do not link, so piles resting on one floor stay
+// apart. Each body is labelled with its island's lowest id; a sleeping body
+// keeps the label it fell asleep with, which is what wake() follows.
+void World::linkIslands() {
+  DisjointSets sets(bodies_.size());
+  for (const Contact& contact : contacts_)
+    if (isMoving(contact.a) && isMoving(contact.b)) sets.unite(contact.a, contact.b);
+  for (BodyId id = 0; id < bodies_.size(); ++id)
+    if (isMoving(id)) island_[id] = sets.find(id);
+}
+
+void World::updateSlowTimes() {
   for (BodyId id = 0; id < bodies_.size(); ++id) {
     if (!isMoving(id)) continue;
     const RigidBody& body = bodies_[id];
@@ -335,17 +367,21 @@ bool World::updateSleep() {
                       body.angularVelocity().norm() < settings_.sleepAngularSpeed;
     slowTime_[id] = slow ? slowTime_[id] + settings_.dt : 0.0;
   }
+}
+
+// An island sleeps as a whole once its most recently moving body has been
+// slow for timeToSleep. Deciding per island, not per contact, keeps the
+// answer independent of contact order: a body never sleeps while anything it
+// is linked to, however indirectly, still moves.
+bool World::updateSleep() {
+  updateSlowTimes();
   if (!settings_.allowSleep) return false;
-  std::vector<bool> ready(bodies_.size(), false);
-  for (BodyId id = 0; id < bodies_.size(); ++id) ready[id] = isMoving(id) && slowTime_[id] >= settings_.timeToSleep;
-  for (const Contact& contact : contacts_) {
-    if (isMoving(contact.a) && isMoving(contact.b) && !(ready[contact.a] && ready[contact.b])) {
-      ready[contact.a] = ready[contact.b] = false;
-    }
-  }
+  std::vector<double> islandSlowTime(bodies_.size(), std::numeric_limits<double>::infinity());
+  for (BodyId id = 0; id < bodies_.size(); ++id)
+    if (isMoving(id)) islandSlowTime[island_[id]] = std::min(islandSlowTime[island_[id]], slowTime_[id]);
   bool fellAsleep = false;
   for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (!ready[id]) continue;
+    if (!isMoving(id) || islandSlowTime[island_[id]] < settings_.timeToSleep) continue;
     putToSleep(id);
     fellAsleep = true;
   }

@@ -99,7 +99,12 @@ class World {
   void setContactListener(ContactListener* listener) { listener_ = listener; }
 
   bool isAsleep(BodyId id) const { return asleep_.at(id); }
+  // Wakes the body and every body of the island it fell asleep with.
   void wake(BodyId id);
+  // The lowest id of the body's island: awake bodies linked by the last
+  // step's touching contacts, or, for a sleeping body, the island it fell
+  // asleep with. A static or frozen body is alone (its own id).
+  BodyId islandOf(BodyId id) const { return island_.at(id); }
   bool isFrozen(BodyId id) const { return frozen_.at(id); }
   const std::vector<NumericalFault>& numericalFaults() const { return faults_; }
   const StepStats& lastStepStats() const { return stats_; }
@@ -142,6 +147,7 @@ class World {
 
  private:
   void applyForces();
+  void wakePushedBodies();
   void integrateVelocities();
   void updateBroadPhase();
   void findContacts();
@@ -160,9 +166,12 @@ class World {
   std::vector<BodyPair> overlappingBoxes(double margin) const;
   void keepRestingContacts(bool fellAsleep);
   bool atRest(const BodyPair& pair) const;
-  bool updateSleep();  // true when a body fell asleep
+  void linkIslands();
+  void updateSlowTimes();
+  bool updateSleep();  // true when an island fell asleep
   void freezeNonFiniteBodies();
   void putToSleep(BodyId id);
+  void wakeBody(BodyId id);  // this body only; wake() wakes its island
   std::vector<std::shared_ptr<const debugdraw::TriangleMesh>> hullMeshes() const;
   bool isMoving(BodyId id) const { return !bodies_[id].isStatic() && !asleep_[id] && !frozen_[id]; }
 
@@ -171,6 +180,7 @@ class World {
   std::vector<int> proxies_;  // broad-phase proxy per body, -1 once frozen
   std::vector<bool> frozen_, asleep_;
   std::vector<double> slowTime_;  // seconds spent below the sleep speeds
+  std::vector<BodyId> island_;    // lowest id of the body's island (see islandOf)
   std::unique_ptr<BroadPhase> broadPhase_;
   std::vector<BodyPair> pairs_;
   std::vector<Contact> contacts_;

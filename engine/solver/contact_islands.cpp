@@ -1,28 +1,11 @@
 #include "engine/solver/contact_islands.h"
 
 #include <algorithm>
-#include <numeric>
+
+#include "engine/disjoint_sets.h"
 
 namespace physdbg {
 namespace {
-
-// Union-find over body ids with path halving.
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t count) : parent_(count) { std::iota(parent_.begin(), parent_.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void unite(std::uint32_t x, std::uint32_t y) {
-    x = find(x);
-    y = find(y);
-    if (x != y) parent_[std::max(x, y)] = std::min(x, y);
-  }
-
- private:
-  std::vector<std::uint32_t> parent_;
-};
 
 constexpr std::uint32_t none = ~0u;
 
