@@ -87,6 +87,11 @@ class ReplayViewer {
     if (!tagged_) return recorded;
     debugdraw::ViewSelection selection = selectionOf(view_.options);
     selection.layers = view_.layers.value_or(recorded.shownLayers);
+    // --tree-depth against the recorded layers: without tree it would draw nothing.
+    if (!view_.layers && (view_.options.treeMinDepth > 0 || view_.options.treeMaxDepth < (1 << 30)) &&
+        !selection.layers.has(debugdraw::Layer::Tree))
+      throw UsageError("--tree-depth: it limits the 'tree' layer, which the recording run did not show (" +
+                       debugdraw::layerNames(selection.layers) + "); add --layers with tree");
     debugdraw::RecordedFrame shown;
     shown.index = recorded.index;
     try {

@@ -93,6 +93,17 @@ TEST(ViewerCli, FocusOnABodyTheSceneLacksIsRefused) {
   EXPECT_NE(replay.output.find("no body 999"), std::string::npos) << replay.output;
 }
 
+// The recording run showed no tree: a depth range alone would draw nothing.
+TEST(ViewerCli, ReplayTreeDepthNeedsTheTreeLayer) {
+  ScratchFolder folder;
+  succeed("record stack --frames 2 --layers shapes" + small + " -o " + (folder / "stack.rec"));
+  const Result refused = runPhysdbg("replay " + (folder / "stack.rec") + " --tree-depth 1:2 -o " + (folder / "r"));
+  EXPECT_EQ(refused.exitCode, 2) << refused.output;
+  EXPECT_NE(refused.output.find("--tree-depth"), std::string::npos) << refused.output;
+  succeed("replay " + (folder / "stack.rec") + " --tree-depth 1:2 --layers shapes,tree --size 64x48 -o " +
+          (folder / "ok"));
+}
+
 TEST(ViewerCli, RecordLeavesFocusToReplay) {
   ScratchFolder folder;
   const Result result = runPhysdbg("record stack --frames 2 --highlight 1 -o " + (folder / "x.rec"));
