@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <stdexcept>
 
 #include "engine/broadphase/brute_force_broad_phase.h"
@@ -28,7 +27,10 @@ std::unique_ptr<BroadPhase> makeBroadPhase(const WorldSettings& settings) {
 
 }  // namespace
 
-World::World(const WorldSettings& settings) : settings_(settings), broadPhase_(makeBroadPhase(settings)) {
+World::World(const WorldSettings& settings)
+    : settings_(settings),
+      broadPhase_(makeBroadPhase(settings)),
+      solver_(makeContactSolver(settings.solver, settings.narrowPhase)) {
   if (!(settings.dt > 0.0) || !std::isfinite(settings.dt)) throw std::invalid_argument("dt must be positive");
   if (!isFinite(settings.gravity)) throw std::invalid_argument("gravity must be finite");
   if (!(settings.fatMargin >= 0.0)) throw std::invalid_argument("fat margin must not be negative");
@@ -56,30 +58,25 @@ const DynamicAabbTree* World::tree() const {
   return tree ? &tree->tree() : nullptr;
 }
 
-// The order of a step, as the design describes it. The seed solver follows
-// it literally; the sequential-impulse solver integrates velocities and
-// positions itself, in substeps around its contact solve.
+// The order of a step, as the design describes it. When velocities are
+// integrated differs by solver: the seed solver integrates them in beginStep
+// (the design's order), sequential impulses inside its substeps.
 void World::step() {
   stats_ = StepStats{};
-  const bool seed = settings_.solver.kind == SolverKind::Seed;
+  const StepContext context{settings_.dt, settings_.gravity};
   applyForces();  // gravity, user forces and impulses
-  if (seed) integrateVelocities();
+  solver_->beginStep(bodies_, movableBodies(), context);
   freezeNonFiniteBodies();
-  updateBroadPhase();  // fat boxes follow the bodies that moved
-  findContacts();      // candidate pairs, then the narrow phase on each
+  updateBroadPhase(context);  // fat boxes follow the bodies that moved
+  findContacts(context);      // candidate pairs, then the narrow phase on each
   // A body woken by a touch had no pairs with what else it rests on (asleep,
   // its proxy made none): find them before solving, or it would fall a step.
-  while (wakeTouchedBodies()) findContacts();
-  if (seed) {
-    resolveContacts();  // every response after every test is done
-    integratePositions();
-  } else {
-    solveContacts();  // substeps: velocities, contacts, positions
-  }
-  events_.update(eventContacts(), dormantPairs(), listener_);
-  if (keepHistory_) history_.add(stepTouchedPoints());
+  while (wakeTouchedBodies()) findContacts(context);
+  solveContacts(context);  // responses, then positions
+  events_.update(solver_->eventContacts(contacts_), dormantPairs(), listener_);
+  if (keepHistory_) history_.add(solver_->touchedPoints(contacts_));
   linkIslands();
-  keepRestingContacts(updateSleep());
+  keepRestingContacts(updateSleep(context));
   freezeNonFiniteBodies();
   ++stepCount_;
 }
@@ -134,80 +131,47 @@ void World::wakePushedBodies() {
   }
 }
 
-void World::integrateVelocities() {
-  for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (isMoving(id)) bodies_[id].integrateVelocity(settings_.dt);
-  }
+const std::vector<bool>& World::movableBodies() {
+  movable_.resize(bodies_.size());
+  for (BodyId id = 0; id < bodies_.size(); ++id) movable_[id] = isMoving(id);
+  return movable_;
 }
 
-// With sequential impulses the box covers the whole step's sweep, so a fast
-// body finds what lies ahead and gets speculative contacts before it arrives.
-void World::updateBroadPhase() {
-  const bool sweep = settings_.solver.kind == SolverKind::SequentialImpulse;
+void World::updateBroadPhase(const StepContext& context) {
   for (BodyId id = 0; id < bodies_.size(); ++id) {
     if (!isMoving(id)) continue;
-    const RigidBody& body = bodies_[id];
-    const Vec3 displacement = (body.linearVelocity() + body.stepAcceleration() * settings_.dt) * settings_.dt;
-    Aabb box = body.collider().worldBounds(body.transform());
-    if (sweep) box = box.merged({box.min + displacement, box.max + displacement});
-    broadPhase_->moveProxy(proxies_[id], box, displacement);
+    const PredictedMotion motion = solver_->predictMotion(bodies_[id], context);
+    broadPhase_->moveProxy(proxies_[id], motion.box, motion.displacement);
   }
 }
 
-void World::findContacts() {
+void World::findContacts(const StepContext& context) {
   broadPhase_->findPairs(pairs_);
   stats_.broadPhase = broadPhase_->stats();
   stats_.candidatePairs = static_cast<int>(pairs_.size());
   contacts_.clear();
-  std::swap(previousManifolds_, manifolds_);
-  manifolds_.clear();
-  const bool speculative = settings_.solver.kind == SolverKind::SequentialImpulse;
+  solver_->clearContacts();
+  const double touchingGap = solver_->touchingGap();
   for (const BodyPair& pair : pairs_) {
     const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
     // Fat boxes overlap long before the shapes can touch: when even the tight
     // boxes, grown by how far the pair can close this step, stay apart, the
     // narrow phase has nothing to say.
-    const double reach = speculative ? speculativeDistance(pair) : settings_.narrowPhase.touchingTolerance;
+    const double reach = solver_->contactReach(a, b, context);
     if (!a.collider().worldBounds(a.transform()).enlarged(reach).overlaps(b.collider().worldBounds(b.transform()))) {
       ++stats_.boundsRejected;
       continue;
     }
-    const ContactResult result =
-        collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase);
-    stats_.narrowPhase.add(result);
-    if (speculative && (result.status != ContactStatus::Separated || result.distance <= reach))
-      addManifold(pair, result, reach);
-    // The solver holds resting bodies a hair apart (a speculative point aims
-    // at zero gap), so with it "touching" means within the linear slop.
-    const double touchingGap = speculative ? settings_.solver.linearSlop : 0.0;
-    if (result.status == ContactStatus::Separated && result.distance > touchingGap) continue;
-    contacts_.push_back({pair.a, pair.b, result});
+    const Contact contact{pair.a, pair.b,
+                          collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase)};
+    stats_.narrowPhase.add(contact.result);
+    stats_.manifoldPoints += solver_->addCandidate(contact, a, b, reach);
+    if (contact.result.status == ContactStatus::Separated && contact.result.distance > touchingGap) continue;
+    contacts_.push_back(contact);
   }
-  stats_.manifolds = static_cast<int>(manifolds_.size());
+  stats_.manifolds = static_cast<int>(solver_->manifolds().size());
   if (!settings_.skipStaticPairs) testStaticPairs();
   stats_.contacts = static_cast<int>(contacts_.size());
-}
-
-// How far apart two surfaces may be and still get a (speculative) contact:
-// the most they can close in one step, plus a few slops so resting contacts
-// are found before they touch.
-double World::speculativeDistance(const BodyPair& pair) const {
-  const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
-  const double reachA = a.collider().localBounds().halfExtents().norm();
-  const double reachB = b.collider().localBounds().halfExtents().norm();
-  const double closingSpeed = (b.linearVelocity() - a.linearVelocity()).norm() +
-                              (a.stepAcceleration().norm() + b.stepAcceleration().norm()) * settings_.dt +
-                              a.angularVelocity().norm() * reachA + b.angularVelocity().norm() * reachB;
-  return 4.0 * settings_.solver.linearSlop + closingSpeed * settings_.dt;
-}
-
-void World::addManifold(const BodyPair& pair, const ContactResult& result, double reach) {
-  const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
-  ContactManifold& manifold = manifolds_.emplace_back();
-  manifold.a = pair.a;
-  manifold.b = pair.b;
-  buildManifold(a.collider(), a.transform(), b.collider(), b.transform(), result, reach, manifoldScratch_, manifold);
-  stats_.manifoldPoints += manifold.pointCount;
 }
 
 // The design's baseline without static-pair skipping: pairs of bodies that
@@ -244,48 +208,12 @@ bool World::wakeTouchedBodies() {
   return woke;
 }
 
-void World::resolveContacts() {
-  for (const Contact& contact : contacts_) {
-    if (frozen_[contact.a] || frozen_[contact.b]) continue;
-    if (respondToContact(bodies_[contact.a], bodies_[contact.b], contact.result, settings_.response))
-      ++stats_.responses;
-  }
-}
-
-void World::solveContacts() {
-  movable_.resize(bodies_.size());
-  for (BodyId id = 0; id < bodies_.size(); ++id) movable_[id] = isMoving(id);
-  if (settings_.solver.warmStarting) warmStartFromPreviousStep();
-  const SolverStepReport report =
-      solver_.step(bodies_, movable_, manifolds_, settings_.dt, settings_.solver, settings_.gravity);
+void World::solveContacts(const StepContext& context) {
+  const SolverStepReport report = solver_->solve(bodies_, movableBodies(), contacts_, context);
+  stats_.responses = report.responses;
   stats_.largestPenetration = report.largestPenetration;
   stats_.substeps = report.substeps;
   stats_.contactHertz = report.contactHertz;
-  stats_.responses = static_cast<int>(manifolds_.size());
-}
-
-// Impulses of points that persist (same pair, same feature id) carry over.
-void World::warmStartFromPreviousStep() {
-  std::size_t previous = 0;
-  for (ContactManifold& manifold : manifolds_) {
-    const BodyPair pair{manifold.a, manifold.b};
-    while (previous < previousManifolds_.size() &&
-           BodyPair{previousManifolds_[previous].a, previousManifolds_[previous].b} < pair)
-      ++previous;
-    if (previous == previousManifolds_.size()) break;
-    const ContactManifold& old = previousManifolds_[previous];
-    if (BodyPair{old.a, old.b} != pair) continue;
-    for (int p = 0; p < manifold.pointCount; ++p) {
-      ManifoldPoint& point = manifold.points[p];
-      for (int q = 0; q < old.pointCount; ++q) {
-        if (old.points[q].featureId != point.featureId) continue;
-        point.normalImpulse = old.points[q].normalImpulse;
-        point.tangentImpulse[0] = old.points[q].tangentImpulse[0];
-        point.tangentImpulse[1] = old.points[q].tangentImpulse[1];
-        break;
-      }
-    }
-  }
 }
 
 // Pairs that were touching and whose bodies are now all asleep (or static):
@@ -297,54 +225,6 @@ std::vector<BodyPair> World::dormantPairs() const {
     if (asleep_[pair.a] || asleep_[pair.b]) dormant.push_back(pair);
   }
   return dormant;
-}
-
-namespace {
-
-// A speculative manifold the solver pushed on: the bodies were about to meet
-// and were stopped before they did. Reported at its hardest-pushed point.
-std::optional<Contact> speculativeImpact(const ContactManifold& manifold) {
-  const ManifoldPoint* strongest = nullptr;
-  for (int p = 0; p < manifold.pointCount; ++p) {
-    const ManifoldPoint& point = manifold.points[p];
-    if (point.normalImpulse > 0.0 && (!strongest || point.normalImpulse > strongest->normalImpulse))
-      strongest = &point;
-  }
-  if (!strongest) return std::nullopt;
-  ContactResult result;
-  result.status = strongest->separation > 0.0 ? ContactStatus::Separated : ContactStatus::Touching;
-  result.distance = std::max(0.0, strongest->separation);
-  result.normal = manifold.normal;
-  result.pointA = strongest->pointA;
-  result.pointB = strongest->pointB;
-  return Contact{manifold.a, manifold.b, result};
-}
-
-}  // namespace
-
-// The touching pairs contact events report: the narrow phase's, and under
-// sequential impulses also each pair whose speculative points the solver
-// pushed on (an impact stopped just before the surfaces met is an impact).
-// Both lists are in pair order, and so is the result.
-const std::vector<Contact>& World::eventContacts() {
-  if (settings_.solver.kind != SolverKind::SequentialImpulse) return contacts_;
-  eventContacts_.clear();
-  std::size_t next = 0;
-  const auto pairOf = [this](std::size_t index) { return BodyPair{contacts_[index].a, contacts_[index].b}; };
-  for (const ContactManifold& manifold : manifolds_) {
-    const BodyPair pair{manifold.a, manifold.b};
-    while (next < contacts_.size() && pairOf(next) < pair) eventContacts_.push_back(contacts_[next++]);
-    if (next < contacts_.size() && pairOf(next) == pair) continue;
-    if (const std::optional<Contact> impact = speculativeImpact(manifold)) eventContacts_.push_back(*impact);
-  }
-  eventContacts_.insert(eventContacts_.end(), contacts_.begin() + static_cast<std::ptrdiff_t>(next), contacts_.end());
-  return eventContacts_;
-}
-
-void World::integratePositions() {
-  for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (isMoving(id)) bodies_[id].integratePosition(settings_.dt);
-  }
 }
 
 // Islands: awake bodies joined by this step's touching contacts. Static,
@@ -359,13 +239,13 @@ void World::linkIslands() {
     if (isMoving(id)) island_[id] = sets.find(id);
 }
 
-void World::updateSlowTimes() {
+void World::updateSlowTimes(const StepContext& context) {
   for (BodyId id = 0; id < bodies_.size(); ++id) {
     if (!isMoving(id)) continue;
     const RigidBody& body = bodies_[id];
     const bool slow = body.linearVelocity().norm() < settings_.sleepLinearSpeed &&
                       body.angularVelocity().norm() < settings_.sleepAngularSpeed;
-    slowTime_[id] = slow ? slowTime_[id] + settings_.dt : 0.0;
+    slowTime_[id] = slow ? slowTime_[id] + context.dt : 0.0;
   }
 }
 
@@ -373,8 +253,8 @@ void World::updateSlowTimes() {
 // slow for timeToSleep. Deciding per island, not per contact, keeps the
 // answer independent of contact order: a body never sleeps while anything it
 // is linked to, however indirectly, still moves.
-bool World::updateSleep() {
-  updateSlowTimes();
+bool World::updateSleep(const StepContext& context) {
+  updateSlowTimes(context);
   if (!settings_.allowSleep) return false;
   std::vector<double> islandSlowTime(bodies_.size(), std::numeric_limits<double>::infinity());
   for (BodyId id = 0; id < bodies_.size(); ++id)

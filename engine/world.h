@@ -1,7 +1,8 @@
 #pragma once
 // The world owns the bodies and advances them. World::step() is the one place
-// that shows the order of a step; each stage lives in its own small function
-// or file (broadphase/, narrowphase/, collision_response, contact_events).
+// that shows the order of a step; each stage lives in its own folder
+// (broadphase/, narrowphase/, contacts/, solver/), and what differs between
+// solvers is asked of the ContactSolver (solver/contact_solver.h).
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -9,15 +10,14 @@
 
 #include "debugdraw/primitives.h"
 #include "engine/broadphase/broad_phase.h"
-#include "engine/collision_response.h"
-#include "engine/contact_events.h"
-#include "engine/contact_history.h"
+#include "engine/contacts/contact.h"
+#include "engine/contacts/contact_events.h"
+#include "engine/contacts/contact_history.h"
 #include "engine/contacts/contact_manifold.h"
-#include "engine/contacts/manifold_builder.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/math.h"
-#include "engine/narrowphase/contact.h"
-#include "engine/solver/sequential_impulse_solver.h"
+#include "engine/narrowphase/narrow_phase_options.h"
+#include "engine/solver/contact_solver.h"
 #include "engine/solver/solver_settings.h"
 
 namespace physdbg {
@@ -43,8 +43,7 @@ struct WorldSettings {
   double sleepAngularSpeed = 0.05;  // rad/s
   double timeToSleep = 0.5;         // s below both speeds before sleeping
 
-  SolverSettings solver;       // sequential impulses by default
-  ResponseSettings response;   // the seed solver's parameters
+  SolverSettings solver;  // sequential impulses by default; solver.seed for the design's
   NarrowPhaseOptions narrowPhase;
 };
 
@@ -110,7 +109,7 @@ class World {
   const StepStats& lastStepStats() const { return stats_; }
   const std::vector<Contact>& contacts() const { return contacts_; }
   // Sequential-impulse solver only: this step's manifolds, speculative points included.
-  const std::vector<ContactManifold>& manifolds() const { return manifolds_; }
+  const std::vector<ContactManifold>& manifolds() const { return solver_->manifolds(); }
   const std::vector<BodyPair>& candidatePairs() const { return pairs_; }
   // The broad-phase tree, or null when the brute-force broad phase is used.
   const DynamicAabbTree* tree() const;
@@ -148,27 +147,20 @@ class World {
  private:
   void applyForces();
   void wakePushedBodies();
-  void integrateVelocities();
-  void updateBroadPhase();
-  void findContacts();
+  const std::vector<bool>& movableBodies();
+  void updateBroadPhase(const StepContext& context);
+  void findContacts(const StepContext& context);
   void testStaticPairs();
-  void addManifold(const BodyPair& pair, const ContactResult& result, double speculativeDistance);
-  double speculativeDistance(const BodyPair& pair) const;
   bool wakeTouchedBodies();  // true when a body woke
-  void resolveContacts();
-  void solveContacts();
-  void warmStartFromPreviousStep();
-  void integratePositions();
+  void solveContacts(const StepContext& context);
   std::vector<BodyPair> dormantPairs() const;
-  const std::vector<Contact>& eventContacts();
-  std::vector<ShownContact> stepTouchedPoints() const;
   std::vector<ShownContact> initialContacts() const;
   std::vector<BodyPair> overlappingBoxes(double margin) const;
   void keepRestingContacts(bool fellAsleep);
   bool atRest(const BodyPair& pair) const;
   void linkIslands();
-  void updateSlowTimes();
-  bool updateSleep();  // true when an island fell asleep
+  void updateSlowTimes(const StepContext& context);
+  bool updateSleep(const StepContext& context);  // true when an island fell asleep
   void freezeNonFiniteBodies();
   void putToSleep(BodyId id);
   void wakeBody(BodyId id);  // this body only; wake() wakes its island
@@ -183,13 +175,10 @@ class World {
   std::vector<BodyId> island_;    // lowest id of the body's island (see islandOf)
   std::unique_ptr<BroadPhase> broadPhase_;
   std::vector<BodyPair> pairs_;
-  std::vector<Contact> contacts_;
-  std::vector<ContactManifold> manifolds_, previousManifolds_;
-  ManifoldScratch manifoldScratch_;
-  SequentialImpulseSolver solver_;
-  std::vector<bool> movable_;
+  std::vector<Contact> contacts_;  // this step's touching pairs
+  std::unique_ptr<ContactSolver> solver_;
+  std::vector<bool> movable_;  // isMoving, per body, when last asked (movableBodies)
   ContactEventTracker events_;
-  std::vector<Contact> eventContacts_;  // this step's contacts plus speculative impacts
   ContactHistory history_;
   bool keepHistory_ = false;
   std::vector<ShownContact> resting_;  // sorted; what sleeping bodies rest on

@@ -1,4 +1,4 @@
-// The contacts the debugger shows (engine/contact_history.h): the history of
+// The contacts the debugger shows (engine/contacts/contact_history.h): the history of
 // touched points, the points sleeping bodies rest on, and frame 0's contacts
 // found without a step. Nothing here changes the simulation.
 #include <algorithm>
@@ -9,13 +9,7 @@
 namespace physdbg {
 std::vector<ShownContact> World::shownContacts() const {
   if (stepCount_ == 0) return mergeContacts(initialContacts(), resting_);
-  return mergeContacts(keepHistory_ ? history_.points() : stepTouchedPoints(), resting_);
-}
-
-std::vector<ShownContact> World::stepTouchedPoints() const {
-  if (settings_.solver.kind == SolverKind::SequentialImpulse)
-    return touchedPoints(manifolds_, settings_.solver.linearSlop);
-  return touchedPoints(contacts_);
+  return mergeContacts(keepHistory_ ? history_.points() : solver_->touchedPoints(contacts_), resting_);
 }
 
 bool World::atRest(const BodyPair& pair) const {
@@ -29,34 +23,29 @@ bool World::atRest(const BodyPair& pair) const {
 void World::keepRestingContacts(bool fellAsleep) {
   std::erase_if(resting_, [this](const ShownContact& point) { return !atRest(point.pair); });
   if (!fellAsleep) return;
-  std::vector<ShownContact> fresh = stepTouchedPoints();
+  std::vector<ShownContact> fresh = solver_->touchedPoints(contacts_);
   std::erase_if(fresh, [this](const ShownContact& point) { return !atRest(point.pair); });
   for (ShownContact& point : fresh) point.resting = true;
   resting_ = mergeContacts(std::move(fresh), resting_);
 }
 
 // Frame 0 comes before any step: the touching points of the initial state,
-// as the first step's narrow phase would find them (within the linear slop
-// under sequential impulses, static pairs skipped).
+// as the first step's narrow phase would find them (within the solver's
+// touching gap, static pairs skipped), through a fresh solver of the same
+// kind so nothing of this world's changes.
 std::vector<ShownContact> World::initialContacts() const {
-  const bool sequential = settings_.solver.kind == SolverKind::SequentialImpulse;
-  const double touching = sequential ? settings_.solver.linearSlop : 0.0;
+  const std::unique_ptr<ContactSolver> solver = makeContactSolver(settings_.solver, settings_.narrowPhase);
+  const double touching = solver->touchingGap();
   std::vector<Contact> contacts;
-  std::vector<ContactManifold> manifolds;
-  ManifoldScratch scratch;
   for (const BodyPair& pair : overlappingBoxes(touching)) {
     const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
-    const ContactResult result =
-        collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase);
-    if (result.status == ContactStatus::Separated && result.distance > touching) continue;
-    contacts.push_back({pair.a, pair.b, result});
-    if (!sequential) continue;
-    ContactManifold& manifold = manifolds.emplace_back();
-    manifold.a = pair.a;
-    manifold.b = pair.b;
-    buildManifold(a.collider(), a.transform(), b.collider(), b.transform(), result, touching, scratch, manifold);
+    const Contact contact{pair.a, pair.b,
+                          collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase)};
+    if (contact.result.status == ContactStatus::Separated && contact.result.distance > touching) continue;
+    contacts.push_back(contact);
+    solver->addCandidate(contact, a, b, touching);
   }
-  return sequential ? touchedPoints(manifolds, touching) : touchedPoints(contacts);
+  return solver->touchedPoints(contacts);
 }
 
 // Pairs of finite bodies, at least one not static, whose tight boxes grown by

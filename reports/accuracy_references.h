@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/narrowphase/contact.h"
+#include "engine/narrowphase/narrow_phase_options.h"
 #include "engine/world.h"
 
 namespace physdbg::reports {

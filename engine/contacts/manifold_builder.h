@@ -8,7 +8,7 @@
 #include "engine/colliders/collider.h"
 #include "engine/contacts/contact_manifold.h"
 #include "engine/contacts/supporting_feature.h"
-#include "engine/narrowphase/contact.h"
+#include "engine/contacts/contact.h"
 
 namespace physdbg {
 

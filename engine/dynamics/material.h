@@ -1,6 +1,6 @@
 #pragma once
-// Surface properties of a body. How two materials combine is decided where
-// they meet (the contact solver), and documented there.
+// Surface properties of a body. How two materials combine into a pair's is
+// engine/contacts/material_combine.h.
 namespace physdbg {
 
 struct Material {

@@ -3,7 +3,7 @@
 // GJK/EPA path gives the same answers (checked in the tests) but slower.
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/sphere_collider.h"
-#include "engine/narrowphase/contact.h"
+#include "engine/contacts/contact.h"
 
 namespace physdbg {
 

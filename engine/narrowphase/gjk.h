@@ -1,6 +1,6 @@
 #pragma once
 // GJK distance on the cores of two support shapes (margins excluded).
-#include "engine/narrowphase/contact.h"
+#include "engine/narrowphase/narrow_phase_options.h"
 #include "engine/narrowphase/simplex.h"
 #include "engine/narrowphase/support_shape.h"
 

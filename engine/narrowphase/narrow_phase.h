@@ -1,7 +1,7 @@
 #pragma once
 // Entry point of the narrow phase for one candidate pair.
 #include "engine/colliders/collider.h"
-#include "engine/narrowphase/contact.h"
+#include "engine/narrowphase/narrow_phase_options.h"
 
 namespace physdbg {
 

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
+#include "engine/contacts/material_combine.h"
 #include "engine/solver/resting_load.h"
 
 namespace physdbg {
@@ -17,10 +19,6 @@ void tangentBasis(const Vec3& normal, Vec3& first, Vec3& second) {
   first = normal.cross(axis).normalized();
   second = normal.cross(first);
 }
-
-// Friction of a pair: geometric mean, so a frictionless surface (0) makes
-// any pair on it frictionless and equal materials keep their value.
-double combineFriction(double a, double b) { return std::sqrt(a * b); }
 
 // Eigenvalues below 1e-9 of the largest count as zero: the directions the
 // points cannot move in independently get no impulse.
@@ -79,85 +77,189 @@ inline void SequentialImpulseSolver::applyNormal(const ContactManifold& manifold
   point.stepNormalImpulse += impulse;
 }
 
-SolverStepReport SequentialImpulseSolver::step(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-                                               std::vector<ContactManifold>& manifolds, double dt,
-                                               const SolverSettings& settings, const Vec3& gravity) {
-  prepare(bodies, movable, manifolds, settings);
+// The box covers the whole step's sweep, so a fast body finds what lies
+// ahead and gets speculative contacts before it arrives.
+PredictedMotion SequentialImpulseSolver::predictMotion(const RigidBody& body, const StepContext& step) const {
+  const Vec3 displacement = (body.linearVelocity() + body.stepAcceleration() * step.dt) * step.dt;
+  const Aabb box = body.collider().worldBounds(body.transform());
+  return {box.merged({box.min + displacement, box.max + displacement}), displacement};
+}
+
+// How far apart two surfaces may be and still get a (speculative) contact:
+// the most they can close in one step, plus a few slops so resting contacts
+// are found before they touch.
+double SequentialImpulseSolver::contactReach(const RigidBody& a, const RigidBody& b, const StepContext& step) const {
+  const double reachA = a.collider().localBounds().halfExtents().norm();
+  const double reachB = b.collider().localBounds().halfExtents().norm();
+  const double closingSpeed = (b.linearVelocity() - a.linearVelocity()).norm() +
+                              (a.stepAcceleration().norm() + b.stepAcceleration().norm()) * step.dt +
+                              a.angularVelocity().norm() * reachA + b.angularVelocity().norm() * reachB;
+  return 4.0 * settings_.linearSlop + closingSpeed * step.dt;
+}
+
+void SequentialImpulseSolver::clearContacts() {
+  std::swap(previousManifolds_, manifolds_);
+  manifolds_.clear();
+}
+
+int SequentialImpulseSolver::addCandidate(const Contact& contact, const RigidBody& a, const RigidBody& b,
+                                          double reach) {
+  const ContactResult& result = contact.result;
+  if (result.status == ContactStatus::Separated && result.distance > reach) return 0;
+  ContactManifold& manifold = manifolds_.emplace_back();
+  manifold.a = contact.a;
+  manifold.b = contact.b;
+  buildManifold(a.collider(), a.transform(), b.collider(), b.transform(), result, reach, manifoldScratch_, manifold);
+  return manifold.pointCount;
+}
+
+SolverStepReport SequentialImpulseSolver::solve(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                                                const std::vector<Contact>&, const StepContext& step) {
+  if (settings_.warmStarting) warmStartFromPreviousStep();
+  SolverStepReport report = solveManifolds(bodies, movable, manifolds_, step);
+  report.responses = static_cast<int>(manifolds_.size());
+  return report;
+}
+
+// Impulses of points that persist (same pair, same feature id) carry over.
+void SequentialImpulseSolver::warmStartFromPreviousStep() {
+  std::size_t previous = 0;
+  for (ContactManifold& manifold : manifolds_) {
+    const BodyPair pair{manifold.a, manifold.b};
+    while (previous < previousManifolds_.size() &&
+           BodyPair{previousManifolds_[previous].a, previousManifolds_[previous].b} < pair)
+      ++previous;
+    if (previous == previousManifolds_.size()) break;
+    const ContactManifold& old = previousManifolds_[previous];
+    if (BodyPair{old.a, old.b} != pair) continue;
+    for (int p = 0; p < manifold.pointCount; ++p) {
+      ManifoldPoint& point = manifold.points[p];
+      for (int q = 0; q < old.pointCount; ++q) {
+        if (old.points[q].featureId != point.featureId) continue;
+        point.normalImpulse = old.points[q].normalImpulse;
+        point.tangentImpulse[0] = old.points[q].tangentImpulse[0];
+        point.tangentImpulse[1] = old.points[q].tangentImpulse[1];
+        break;
+      }
+    }
+  }
+}
+
+namespace {
+
+// A speculative manifold the solver pushed on: the bodies were about to meet
+// and were stopped before they did. Reported at its hardest-pushed point.
+std::optional<Contact> speculativeImpact(const ContactManifold& manifold) {
+  const ManifoldPoint* strongest = nullptr;
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    const ManifoldPoint& point = manifold.points[p];
+    if (point.normalImpulse > 0.0 && (!strongest || point.normalImpulse > strongest->normalImpulse))
+      strongest = &point;
+  }
+  if (!strongest) return std::nullopt;
+  ContactResult result;
+  result.status = strongest->separation > 0.0 ? ContactStatus::Separated : ContactStatus::Touching;
+  result.distance = std::max(0.0, strongest->separation);
+  result.normal = manifold.normal;
+  result.pointA = strongest->pointA;
+  result.pointB = strongest->pointB;
+  return Contact{manifold.a, manifold.b, result};
+}
+
+}  // namespace
+
+// The narrow phase's touching pairs, and also each pair whose speculative
+// points the solver pushed on (an impact stopped just before the surfaces
+// met is an impact). Both lists are in pair order, and so is the result.
+const std::vector<Contact>& SequentialImpulseSolver::eventContacts(const std::vector<Contact>& contacts) {
+  eventContacts_.clear();
+  std::size_t next = 0;
+  const auto pairOf = [&contacts](std::size_t index) { return BodyPair{contacts[index].a, contacts[index].b}; };
+  for (const ContactManifold& manifold : manifolds_) {
+    const BodyPair pair{manifold.a, manifold.b};
+    while (next < contacts.size() && pairOf(next) < pair) eventContacts_.push_back(contacts[next++]);
+    if (next < contacts.size() && pairOf(next) == pair) continue;
+    if (const std::optional<Contact> impact = speculativeImpact(manifold)) eventContacts_.push_back(*impact);
+  }
+  eventContacts_.insert(eventContacts_.end(), contacts.begin() + static_cast<std::ptrdiff_t>(next), contacts.end());
+  return eventContacts_;
+}
+
+std::vector<ShownContact> SequentialImpulseSolver::touchedPoints(const std::vector<Contact>&) const {
+  return physdbg::touchedPoints(manifolds_, settings_.linearSlop);
+}
+
+SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>& bodies,
+                                                         const std::vector<bool>& movable,
+                                                         std::vector<ContactManifold>& manifolds,
+                                                         const StepContext& step) {
+  prepare(bodies, movable, manifolds);
   prepareApproaches(manifolds);
   // Touching, for holding weight: within the slop, or within a tenth of the
   // smaller body for bodies not much bigger than the slop.
   touching_.resize(manifolds.size());
   for (std::size_t m = 0; m < manifolds.size(); ++m)
-    touching_[m] = std::min(settings.linearSlop, 0.1 * bodySize(manifolds[m]));
-  const double g = gravity.norm();
-  const std::vector<double> loads = g > 0.0 ? restingLoads(bodies, movable, manifolds, touching_, -gravity / g)
+    touching_[m] = std::min(settings_.linearSlop, 0.1 * bodySize(manifolds[m]));
+  const double g = step.gravity.norm();
+  const std::vector<double> loads = g > 0.0 ? restingLoads(bodies, movable, manifolds, touching_, -step.gravity / g)
                                             : std::vector<double>(manifolds.size(), 0.0);
   lastSubstep_.resize(bodies.size(), 0.0);
   std::vector<bool> inIsland(bodies.size(), false);
   SolverStepReport report;
   for (const ContactIsland& island : buildContactIslands(manifolds, movable)) {
-    const Stiffness stiffness = chooseStiffness(manifolds, island, loads, g, dt, settings);
-    const double h = dt / stiffness.substeps;
-    if (settings.warmStarting) {
-      rescaleWarmStart(manifolds, island, movable, h);
-      for (std::uint32_t m : island.manifolds) seedNewContact(manifolds[m], loads[m], touching_[m], g, h);
+    const SubstepContext substeps = chooseSubsteps(manifolds, island, loads, g, step);
+    if (settings_.warmStarting) {
+      rescaleWarmStart(manifolds, island, movable, substeps.h);
+      for (std::uint32_t m : island.manifolds) seedNewContact(manifolds[m], loads[m], touching_[m], g, substeps.h);
     }
-    solveIsland(bodies, manifolds, island, stiffness, dt, settings);
+    solveIsland(bodies, manifolds, island, substeps);
     for (std::uint32_t id : island.bodies) {
       inIsland[id] = true;
-      lastSubstep_[id] = h;
+      lastSubstep_[id] = substeps.h;
     }
     report.largestPenetration = std::max(report.largestPenetration, largestPenetration(manifolds, island));
-    report.substeps = std::max(report.substeps, stiffness.substeps);
-    report.contactHertz = std::max(report.contactHertz, stiffness.hertz);
+    report.substeps = std::max(report.substeps, substeps.count);
+    report.contactHertz = std::max(report.contactHertz, substeps.contactHertz);
   }
-  integrateFreeBodies(bodies, movable, inIsland, dt, settings);
-  if (report.substeps == 0) report = {0.0, std::max(settings.substeps, 1), settings.contactHertz};
+  const SubstepContext calm =
+      substepContext(step, std::max(settings_.substeps, 1), settings_.contactHertz, settings_.dampingRatio);
+  integrateFreeBodies(bodies, movable, inIsland, calm);
+  if (report.substeps == 0) {
+    report.substeps = calm.count;
+    report.contactHertz = calm.contactHertz;
+  }
   return report;
 }
 
 // Bodies in no manifold take the base substeps, as a calm island would.
 void SequentialImpulseSolver::integrateFreeBodies(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-                                                  const std::vector<bool>& inIsland, double dt,
-                                                  const SolverSettings& settings) {
-  const int substeps = std::max(settings.substeps, 1);
-  const double h = dt / substeps;
+                                                  const std::vector<bool>& inIsland, const SubstepContext& substeps) {
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (!movable[i] || inIsland[i]) continue;
-    for (int substep = 0; substep < substeps; ++substep) {
-      bodies[i].integrateVelocity(h);
-      bodies[i].integratePosition(h);
+    for (int substep = 0; substep < substeps.count; ++substep) {
+      bodies[i].integrateVelocity(substeps.h);
+      bodies[i].integratePosition(substeps.h);
     }
-    lastSubstep_[i] = h;
+    lastSubstep_[i] = substeps.h;
   }
 }
 
 void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
-                                          const ContactIsland& island, const Stiffness& stiffness, double dt,
-                                          const SolverSettings& settings) {
-  const double h = dt / stiffness.substeps;
-  Softness softness;
-  if (stiffness.hertz > 0.0) {
-    const double omega = 2.0 * std::numbers::pi * stiffness.hertz;
-    const double a1 = 2.0 * settings.dampingRatio + h * omega;
-    const double a2 = h * omega * a1;
-    const double a3 = 1.0 / (1.0 + a2);
-    softness = {omega / a1, a2 * a3, a3};
-  }
+                                          const ContactIsland& island, const SubstepContext& substeps) {
+  const double h = substeps.h;
   measureGaps(manifolds, island);
-  const Softness rigid;
-  for (int substep = 0; substep < stiffness.substeps; ++substep) {
+  for (int substep = 0; substep < substeps.count; ++substep) {
     for (std::uint32_t id : island.bodies) bodies[id].integrateVelocity(h);
     loadVelocities(bodies, island);
-    if (settings.warmStarting) warmStart(manifolds, island);
-    for (int iteration = 0; iteration < settings.velocityIterations; ++iteration)
-      solve(manifolds, island, h, softness, true, (substep + iteration) % 2 == 1, settings);
+    if (settings_.warmStarting) warmStart(manifolds, island);
+    for (int iteration = 0; iteration < settings_.velocityIterations; ++iteration)
+      solve(manifolds, island, substeps, true, (substep + iteration) % 2 == 1);
     storeVelocities(bodies, island);
     for (std::uint32_t id : island.bodies) bodies[id].integratePosition(h);
     loadPoses(bodies, island);
     measureGaps(manifolds, island);
     loadVelocities(bodies, island);
-    solve(manifolds, island, h, rigid, false, substep % 2 == 0, settings);
+    solve(manifolds, island, substeps, false, substep % 2 == 0);
     storeVelocities(bodies, island);
   }
   loadVelocities(bodies, island);
@@ -169,9 +271,11 @@ void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::v
 // point would then settle deeper than restingOverlap; substeps follow the
 // frequency, since a soft contact stiffer than a quarter of the substep rate
 // rings. Past maxSubsteps the frequency is capped and the overlap grows.
-SequentialImpulseSolver::Stiffness SequentialImpulseSolver::chooseStiffness(
-    const std::vector<ContactManifold>& manifolds, const ContactIsland& island, const std::vector<double>& loads,
-    double gravity, double dt, const SolverSettings& settings) const {
+SubstepContext SequentialImpulseSolver::chooseSubsteps(const std::vector<ContactManifold>& manifolds,
+                                                       const ContactIsland& island, const std::vector<double>& loads,
+                                                       double gravity, const StepContext& step) const {
+  const SolverSettings& settings = settings_;
+  const double dt = step.dt;
   const int fewest = std::max(settings.substeps, 1);
   const int most = std::max(settings.maxSubsteps, fewest);
   double hertz = settings.contactHertz;
@@ -194,7 +298,7 @@ SequentialImpulseSolver::Stiffness SequentialImpulseSolver::chooseStiffness(
   // Substeps that make `hertz` a quarter of the substep rate, within bounds.
   const double wanted = std::ceil(4.0 * hertz * dt - 1e-9);
   const int substeps = static_cast<int>(std::clamp(wanted, static_cast<double>(fewest), static_cast<double>(most)));
-  return {substeps, std::min(hertz, 0.25 * substeps / dt)};
+  return substepContext(step, substeps, std::min(hertz, 0.25 * substeps / dt), settings.dampingRatio);
 }
 
 // The middle of a body's three extents: a cube's edge, a plate's width, a
@@ -226,7 +330,8 @@ void SequentialImpulseSolver::rescaleWarmStart(std::vector<ContactManifold>& man
 }
 
 void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-                                      std::vector<ContactManifold>& manifolds, const SolverSettings& settings) {
+                                      std::vector<ContactManifold>& manifolds) {
+  const SolverSettings& settings = settings_;
   solverBodies_.resize(bodies.size());
   std::vector<bool> listed(bodies.size(), false);
   for (const ContactManifold& manifold : manifolds) {
@@ -256,7 +361,7 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
     const RigidBody &a = bodies[manifold.a], &b = bodies[manifold.b];
     const SolverBody &bodyA = solverBodies_[manifold.a], &bodyB = solverBodies_[manifold.b];
     const double inverseMassSum = bodyA.inverseMass + bodyB.inverseMass;
-    const double restitution = std::max(a.material().restitution, b.material().restitution);
+    const CombinedMaterial material = combineMaterials(a.material(), b.material());
     for (int p = 0; p < manifold.pointCount; ++p) {
       ManifoldPoint& point = manifold.points[p];
       PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
@@ -283,10 +388,8 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
       const Vec3 relative = relativeVelocity(manifold, c);
       c.approachVelocity = relative.dot(manifold.normal);
       const double slidingSpeed = (relative - c.approachVelocity * manifold.normal).norm();
-      c.friction = slidingSpeed < settings.stickingSpeed
-                       ? combineFriction(a.material().staticFriction, b.material().staticFriction)
-                       : combineFriction(a.material().dynamicFriction, b.material().dynamicFriction);
-      c.restitution = c.approachVelocity < -settings.restitutionThreshold ? restitution : 0.0;
+      c.friction = slidingSpeed < settings.stickingSpeed ? material.staticFriction : material.dynamicFriction;
+      c.restitution = c.approachVelocity < -settings.restitutionThreshold ? material.restitution : 0.0;
       c.largestImpulse = 0.0;
       point.stepNormalImpulse = 0.0;
       if (!settings.warmStarting) point.normalImpulse = point.tangentImpulse[0] = point.tangentImpulse[1] = 0.0;
@@ -338,9 +441,10 @@ void SequentialImpulseSolver::warmStart(std::vector<ContactManifold>& manifolds,
   }
 }
 
-void SequentialImpulseSolver::solveNormals(ContactManifold& manifold, std::size_t m, double substep,
-                                           const Softness& softness, bool useBias, bool reversed,
-                                           const SolverSettings& settings) {
+void SequentialImpulseSolver::solveNormals(ContactManifold& manifold, std::size_t m,
+                                           const SubstepContext& substeps, bool useBias, bool reversed) {
+  const double substep = substeps.h;
+  const Softness& softness = substeps.softness;
   for (int visit = 0; visit < manifold.pointCount; ++visit) {
     const int p = reversed ? manifold.pointCount - 1 - visit : visit;
     ManifoldPoint& point = manifold.points[p];
@@ -350,7 +454,7 @@ void SequentialImpulseSolver::solveNormals(ContactManifold& manifold, std::size_
     if (gap > 0.0) {
       bias = gap / substep;
     } else if (useBias) {
-      bias = std::max(softness.biasRate * gap, -settings.maxPushSpeed);
+      bias = std::max(softness.biasRate * gap, -settings_.maxPushSpeed);
       massScale = softness.massScale;
       impulseScale = softness.impulseScale;
     }
@@ -438,12 +542,11 @@ void SequentialImpulseSolver::prepareApproaches(const std::vector<ContactManifol
 // order hands the first corner the largest share of every correction, which
 // tilts a stack the same way step after step until it walks sideways.
 void SequentialImpulseSolver::solve(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
-                                    double substep, const Softness& softness, bool useBias, bool reversed,
-                                    const SolverSettings& settings) {
+                                    const SubstepContext& substeps, bool useBias, bool reversed) {
   for (std::uint32_t m : island.manifolds) {
     ContactManifold& manifold = manifolds[m];
-    if (!(approaching_[m] && solveApproachTogether(manifold, m, substep)))
-      solveNormals(manifold, m, substep, softness, useBias, reversed, settings);
+    if (!(approaching_[m] && solveApproachTogether(manifold, m, substeps.h)))
+      solveNormals(manifold, m, substeps, useBias, reversed);
     solveFriction(manifold, m, reversed);
   }
 }

@@ -16,32 +16,38 @@
 // (contact_islands.h), so only the pile that needs it pays for it.
 #include <vector>
 
-#include "engine/contacts/contact_manifold.h"
-#include "engine/dynamics/rigid_body.h"
+#include "engine/contacts/manifold_builder.h"
 #include "engine/solver/contact_islands.h"
-#include "engine/solver/solver_settings.h"
+#include "engine/solver/contact_solver.h"
 
 namespace physdbg {
 
-struct SolverStepReport {
-  double largestPenetration = 0.0;  // left after the step, m
-  int substeps = 0;                 // the most any island took this step
-  double contactHertz = 0.0;        // the stiffest any island used this step
-};
-
-class SequentialImpulseSolver {
+class SequentialImpulseSolver final : public ContactSolver {
  public:
+  explicit SequentialImpulseSolver(const SolverSettings& settings) : settings_(settings) {}
+
+  void beginStep(std::vector<RigidBody>&, const std::vector<bool>&, const StepContext&) override {}
+  PredictedMotion predictMotion(const RigidBody& body, const StepContext& step) const override;
+  double contactReach(const RigidBody& a, const RigidBody& b, const StepContext& step) const override;
+  double touchingGap() const override { return settings_.linearSlop; }
+  void clearContacts() override;
+  int addCandidate(const Contact& contact, const RigidBody& a, const RigidBody& b, double reach) override;
+  SolverStepReport solve(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                         const std::vector<Contact>& contacts, const StepContext& step) override;
+  const std::vector<Contact>& eventContacts(const std::vector<Contact>& contacts) override;
+  std::vector<ShownContact> touchedPoints(const std::vector<Contact>& contacts) const override;
+  const std::vector<ContactManifold>& manifolds() const override { return manifolds_; }
+
+ private:
   // Advances every movable body by dt (velocities and positions) while
   // solving the manifolds. `movable[i]` false: body i is immovable this step
   // (static, asleep or frozen). Impulses in the manifolds warm-start the solve
   // and hold the final ones afterwards (those of the island's last substep);
   // each point's stepNormalImpulse holds the step's total. Gravity tells which
   // contacts hold weight (resting_load.h).
-  SolverStepReport step(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-                        std::vector<ContactManifold>& manifolds, double dt, const SolverSettings& settings,
-                        const Vec3& gravity);
+  SolverStepReport solveManifolds(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                                  std::vector<ContactManifold>& manifolds, const StepContext& step);
 
- private:
   // Rows of a contact point: 0 the normal, 1 and 2 the tangents. For each,
   // the arm crossed with the direction and the angular velocity change a unit
   // impulse causes (inverse inertia applied, locked axes zeroed) are kept,
@@ -58,9 +64,6 @@ class SequentialImpulseSolver {
     double largestImpulse = 0;  // did this point ever push (restitution needs it)
     double gap = 0;             // separation at the current poses (measureGaps)
   };
-  struct Softness {
-    double biasRate = 0, massScale = 1, impulseScale = 0;
-  };
   // The solver's working copy of a body: velocities and the pose used to
   // measure gaps, next to the inverse mass and the lock masks, so the inner
   // loop touches one small struct per body.
@@ -74,34 +77,30 @@ class SequentialImpulseSolver {
     double size = 0;  // middle extent of the collider's box, m
   };
 
-  struct Stiffness {
-    int substeps = 1;
-    double hertz = 0.0;
-  };
-  Stiffness chooseStiffness(const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
-                            const std::vector<double>& loads, double gravity, double dt,
-                            const SolverSettings& settings) const;
+  SubstepContext chooseSubsteps(const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
+                                const std::vector<double>& loads, double gravity, const StepContext& step) const;
   double bodySize(const ContactManifold& manifold) const;
   void rescaleWarmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
                         const std::vector<bool>& movable, double substep) const;
   void integrateFreeBodies(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-                           const std::vector<bool>& inIsland, double dt, const SolverSettings& settings);
+                           const std::vector<bool>& inIsland, const SubstepContext& substeps);
   void solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds, const ContactIsland& island,
-                   const Stiffness& stiffness, double dt, const SolverSettings& settings);
+                   const SubstepContext& substeps);
   void prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-               std::vector<ContactManifold>& manifolds, const SolverSettings& settings);
+               std::vector<ContactManifold>& manifolds);
   void loadVelocities(const std::vector<RigidBody>& bodies, const ContactIsland& island);
   void storeVelocities(std::vector<RigidBody>& bodies, const ContactIsland& island) const;
   void loadPoses(const std::vector<RigidBody>& bodies, const ContactIsland& island);
   void measureGaps(const std::vector<ContactManifold>& manifolds, const ContactIsland& island);
   void warmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island);
   void prepareApproaches(const std::vector<ContactManifold>& manifolds);
-  void solveNormals(ContactManifold& manifold, std::size_t m, double substep, const Softness& softness, bool useBias,
-                    bool reversed, const SolverSettings& settings);
+  // useBias: the soft push-out of overlap (off in the relax pass after positions moved).
+  void solveNormals(ContactManifold& manifold, std::size_t m, const SubstepContext& substeps, bool useBias,
+                    bool reversed);
   bool solveApproachTogether(ContactManifold& manifold, std::size_t m, double substep);
   void solveFriction(ContactManifold& manifold, std::size_t m, bool reversed);
-  void solve(std::vector<ContactManifold>& manifolds, const ContactIsland& island, double substep,
-             const Softness& softness, bool useBias, bool reversed, const SolverSettings& settings);
+  void solve(std::vector<ContactManifold>& manifolds, const ContactIsland& island, const SubstepContext& substeps,
+             bool useBias, bool reversed);
   void applyRestitution(std::vector<ContactManifold>& manifolds, const ContactIsland& island);
   double largestPenetration(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
   double separation(const ContactManifold& manifold, const ManifoldPoint& point) const;
@@ -113,6 +112,12 @@ class SequentialImpulseSolver {
   void applyNormal(const ContactManifold& manifold, const PointConstraint& constraint, ManifoldPoint& point,
                    double impulse);
 
+  void warmStartFromPreviousStep();
+
+  SolverSettings settings_;
+  std::vector<ContactManifold> manifolds_, previousManifolds_;
+  ManifoldScratch manifoldScratch_;
+  std::vector<Contact> eventContacts_;  // this step's contacts plus speculative impacts
   std::vector<SolverBody> solverBodies_;
   std::vector<PointConstraint> constraints_;      // maxPoints per manifold
   std::vector<double> touching_;                  // per manifold: largest separation that holds weight, m

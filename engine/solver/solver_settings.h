@@ -3,12 +3,27 @@
 namespace physdbg {
 
 enum class SolverKind {
-  Seed,               // the design's one-point response (collision_response.h)
+  Seed,               // the design's one-point response (seed_solver.h)
   SequentialImpulse,  // manifolds, friction, soft contacts, substeps (sequential_impulse_solver.h)
 };
 
+// The seed solver's parameters: the design's response, one contact at a time.
+struct SeedSolverSettings {
+  // Share of the penetration (beyond the allowed one) removed per step: the
+  // design's editable damping. 1 removes it at once, smaller is softer.
+  double positionCorrection = 0.8;
+  // Penetration left in place so a resting contact stays a contact and does
+  // not flicker between touching and separated every step.
+  double allowedPenetration = 0.005;
+  // Below this approach speed (m/s) contacts do not bounce: a resting body
+  // with restitution would otherwise hop on gravity's dt*g every step.
+  double restitutionThreshold = 0.2;
+};
+
+// Everything below `seed` belongs to the sequential-impulse solver.
 struct SolverSettings {
   SolverKind kind = SolverKind::SequentialImpulse;
+  SeedSolverSettings seed;
   // The step is cut into substeps; each integrates velocities, solves the
   // contacts `velocityIterations` times with soft position feedback,
   // integrates positions, then relaxes once without feedback. Substeps

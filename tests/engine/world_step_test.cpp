@@ -1,7 +1,7 @@
 // The world step against closed-form mechanics: bounce heights, head-on and
 // off-centre collisions, resting contact, axis locks, numerical faults and
 // sleeping. Expected values come from the impulse law the response implements
-// (engine/collision_response.h), not from earlier runs.
+// (engine/solver/seed_solver.h), not from earlier runs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -219,7 +219,7 @@ TEST(WorldStep, PositionCorrectionIsSplitByInverseMass) {
   const BodyId light = world.addBody(sphere(0.5, Vec3(0, 0, 0), 1.0));
   const BodyId heavy = world.addBody(sphere(0.5, Vec3(1.0 - depth, 0, 0), 3.0));
   world.step();
-  const ResponseSettings& response = world.settings().response;
+  const SeedSolverSettings& response = world.settings().solver.seed;
   const double removed = response.positionCorrection * (depth - response.allowedPenetration);
   const double lightMove = -world.body(light).position().x();
   const double heavyMove = world.body(heavy).position().x() - (1.0 - depth);
@@ -353,7 +353,7 @@ TEST(WorldStep, RestingSphereStaysAtRestFor1000Steps) {
       ASSERT_EQ(position.x(), start.x());
       ASSERT_EQ(position.z(), start.z());
     }
-    const double allowed = settings.response.allowedPenetration;
+    const double allowed = settings.solver.seed.allowedPenetration;
     EXPECT_LE(highest, start.y());
     EXPECT_GE(lowest, radius - allowed);
     EXPECT_LT(world.body(ball).linearVelocity().norm(), gravity * settings.dt);
@@ -373,7 +373,7 @@ TEST(WorldStep, RestingBoxStaysAtRestFor1000Steps) {
   const BodyId id = world.addBody(box(Vec3(0.5, 0.5, 0.5), start));
   for (int i = 0; i < 1000; ++i) {
     world.step();
-    ASSERT_LE((world.body(id).position() - start).norm(), world.settings().response.allowedPenetration);
+    ASSERT_LE((world.body(id).position() - start).norm(), world.settings().solver.seed.allowedPenetration);
     // Gauss-Seidel visits the four corners in turn, which leaves a residual
     // spin of order 1e-5 rad/s; a rocking box (the seed's 0.74 rad/s) fails.
     ASSERT_LT(world.body(id).angularVelocity().norm(), 1e-3);
@@ -499,7 +499,7 @@ TEST(WorldStep, NonFiniteBodyTouchingAnotherIsFrozenBeforeItCanPoisonIt) {
   // Under the upper ball's weight the lower one sank to the allowed
   // penetration (plus at most one step of sinking, g dt^2); it stays there.
   EXPECT_LE(world.body(lower).position().y(), 0.5);
-  EXPECT_GE(world.body(lower).position().y(), 0.5 - settings.response.allowedPenetration - gravity * settings.dt * settings.dt);
+  EXPECT_GE(world.body(lower).position().y(), 0.5 - settings.solver.seed.allowedPenetration - gravity * settings.dt * settings.dt);
 }
 
 // ---------------------------------------------------------------- sleeping

@@ -1,4 +1,4 @@
-#include "engine/contact_events.h"
+#include "engine/contacts/contact_events.h"
 
 #include <algorithm>
 

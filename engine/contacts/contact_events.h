@@ -5,14 +5,9 @@
 #include <vector>
 
 #include "engine/broadphase/broad_phase.h"
-#include "engine/narrowphase/contact.h"
+#include "engine/contacts/contact.h"
 
 namespace physdbg {
-
-struct Contact {
-  std::uint32_t a = 0, b = 0;  // body ids, a < b
-  ContactResult result;
-};
 
 class ContactListener {
  public:

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "engine/broadphase/broad_phase.h"
-#include "engine/contact_events.h"
+#include "engine/contacts/contact_events.h"
 #include "engine/contacts/contact_manifold.h"
 
 namespace physdbg {

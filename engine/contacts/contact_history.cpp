@@ -1,4 +1,4 @@
-#include "engine/contact_history.h"
+#include "engine/contacts/contact_history.h"
 
 #include <algorithm>
 #include <tuple>

@@ -1,27 +1,9 @@
 #pragma once
-// What the narrow phase reports for one pair. Conventions: the normal points
-// from A to B; moving B by depth * normal separates the pair; pointA is A's
-// deepest point inside B (or A's closest point when separated) and pointB is
-// B's, both in world space.
-#include "engine/math.h"
+// How hard the narrow phase works and what it counts; kept apart from the
+// contact types so the solvers need not see the narrow phase's knobs.
+#include "engine/contacts/contact.h"
 
 namespace physdbg {
-
-enum class ContactStatus { Separated, Touching, Penetrating };
-
-const char* contactStatusName(ContactStatus status);
-
-struct ContactResult {
-  ContactStatus status = ContactStatus::Separated;
-  double distance = 0.0;  // > 0 when separated, 0 otherwise
-  Vec3 normal = Vec3::UnitY();
-  double depth = 0.0;  // > 0 when penetrating, 0 otherwise
-  Vec3 pointA = Vec3::Zero();
-  Vec3 pointB = Vec3::Zero();
-  int gjkIterations = 0;
-  int epaIterations = 0;
-  bool usedGeneralPath = false;
-};
 
 struct NarrowPhaseOptions {
   // Signed distances within +-touchingTolerance (metres) are reported as

@@ -1,4 +1,4 @@
-#include "engine/narrowphase/contact.h"
+#include "engine/contacts/contact.h"
 
 namespace physdbg {
 

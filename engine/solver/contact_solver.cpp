@@ -1,0 +1,36 @@
+#include "engine/solver/contact_solver.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "engine/narrowphase/narrow_phase_options.h"
+#include "engine/solver/seed_solver.h"
+#include "engine/solver/sequential_impulse_solver.h"
+
+namespace physdbg {
+
+SubstepContext substepContext(const StepContext& step, int count, double contactHertz, double dampingRatio) {
+  SubstepContext substeps;
+  substeps.count = count;
+  substeps.h = step.dt / count;
+  substeps.contactHertz = contactHertz;
+  if (contactHertz > 0.0) {
+    const double omega = 2.0 * std::numbers::pi * contactHertz;
+    const double a1 = 2.0 * dampingRatio + substeps.h * omega;
+    const double a2 = substeps.h * omega * a1;
+    const double a3 = 1.0 / (1.0 + a2);
+    substeps.softness = {omega / a1, a2 * a3, a3};
+  }
+  return substeps;
+}
+
+std::unique_ptr<ContactSolver> makeContactSolver(const SolverSettings& settings,
+                                                 const NarrowPhaseOptions& narrowPhase) {
+  switch (settings.kind) {
+    case SolverKind::Seed: return std::make_unique<SeedSolver>(settings.seed, narrowPhase.touchingTolerance);
+    case SolverKind::SequentialImpulse: return std::make_unique<SequentialImpulseSolver>(settings);
+  }
+  return nullptr;
+}
+
+}  // namespace physdbg

@@ -1,0 +1,76 @@
+#pragma once
+// The contact solver behind World. World::step is one unbranched pipeline
+// (forces, broad phase, narrow phase, solver, events, sleep); whatever
+// differs between solvers is asked of the solver: whether velocities are
+// integrated before the narrow phase or inside the solve, how far ahead a
+// body's proxy box reaches, how far apart a pair still matters, what counts
+// as touching, what it keeps between steps (warm starting) and which points
+// the debugger shows. makeContactSolver is the one place that picks one.
+#include <memory>
+#include <vector>
+
+#include "engine/aabb.h"
+#include "engine/contacts/contact.h"
+#include "engine/contacts/contact_history.h"
+#include "engine/contacts/contact_manifold.h"
+#include "engine/dynamics/rigid_body.h"
+#include "engine/solver/solver_settings.h"
+#include "engine/solver/step_context.h"
+
+namespace physdbg {
+
+struct NarrowPhaseOptions;
+
+// Where a moving body's broad-phase box goes this step, and the displacement
+// the tree uses to stretch its fat box ahead of the motion.
+struct PredictedMotion {
+  Aabb box;
+  Vec3 displacement = Vec3::Zero();
+};
+
+struct SolverStepReport {
+  int responses = 0;                // contacts (seed) or manifolds (sequential impulses) solved
+  double largestPenetration = 0.0;  // left after the step, m (sequential impulses)
+  int substeps = 0;                 // the most any island took this step
+  double contactHertz = 0.0;        // the stiffest contact frequency any island used
+};
+
+class ContactSolver {
+ public:
+  virtual ~ContactSolver() = default;
+
+  // `movable[i]`: body i is dynamic, awake and finite this step. Called after
+  // forces were applied, before the broad phase.
+  virtual void beginStep(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                         const StepContext& step) = 0;
+  virtual PredictedMotion predictMotion(const RigidBody& body, const StepContext& step) const = 0;
+  // How far apart two surfaces may be and still be handed to addCandidate.
+  virtual double contactReach(const RigidBody& a, const RigidBody& b, const StepContext& step) const = 0;
+  // Surfaces this close count as touching: contact events, red boxes, islands.
+  virtual double touchingGap() const = 0;
+
+  // A new narrow-phase pass begins (World may run several in a step when a
+  // touch wakes a body).
+  virtual void clearContacts() = 0;
+  // Every narrow-phase result within reach, in pair order. Returns the
+  // manifold points it kept (0 for a solver without manifolds).
+  virtual int addCandidate(const Contact& contact, const RigidBody& a, const RigidBody& b, double reach) = 0;
+
+  // Solves `contacts` (the touching ones) or the kept candidates, and moves
+  // every movable body to the end of the step.
+  virtual SolverStepReport solve(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                                 const std::vector<Contact>& contacts, const StepContext& step) = 0;
+
+  // The pairs contact events report as touching, in pair order: `contacts`,
+  // plus whatever else the solver pushed on.
+  virtual const std::vector<Contact>& eventContacts(const std::vector<Contact>& contacts) = 0;
+  // This step's touched points, for the debugger (contact_history.h).
+  virtual std::vector<ShownContact> touchedPoints(const std::vector<Contact>& contacts) const = 0;
+  // This step's manifolds, speculative points included; empty without manifolds.
+  virtual const std::vector<ContactManifold>& manifolds() const = 0;
+};
+
+std::unique_ptr<ContactSolver> makeContactSolver(const SolverSettings& settings,
+                                                 const NarrowPhaseOptions& narrowPhase);
+
+}  // namespace physdbg

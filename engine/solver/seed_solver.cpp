@@ -1,0 +1,70 @@
+#include "engine/solver/seed_solver.h"
+
+#include <algorithm>
+
+#include "engine/contacts/material_combine.h"
+
+namespace physdbg {
+
+bool respondToContact(RigidBody& a, RigidBody& b, const ContactResult& contact, const SeedSolverSettings& settings) {
+  const Vec3& normal = contact.normal;  // from A to B
+  const Vec3 point = 0.5 * (contact.pointA + contact.pointB);
+  const Vec3 armA = point - a.position(), armB = point - b.position();
+  const Vec3 relativeVelocity = (b.linearVelocity() + b.angularVelocity().cross(armB)) -
+                                (a.linearVelocity() + a.angularVelocity().cross(armA));
+  const double approach = relativeVelocity.dot(normal);
+  if (approach > 0.0) return false;
+
+  const double inverseMassSum = a.inverseMass() + b.inverseMass();
+  if (inverseMassSum == 0.0) return false;
+
+  const double excess = std::max(contact.depth - settings.allowedPenetration, 0.0);
+  if (excess > 0.0) {
+    const Vec3 push = normal * (settings.positionCorrection * excess / inverseMassSum);
+    a.translate(-push * a.inverseMass());
+    b.translate(push * b.inverseMass());
+  }
+
+  const Mat3 inverseInertiaA = a.worldInverseInertia(), inverseInertiaB = b.worldInverseInertia();
+  const double angularTerm = normal.dot((inverseInertiaA * armA.cross(normal)).cross(armA) +
+                                        (inverseInertiaB * armB.cross(normal)).cross(armB));
+  const double restitution =
+      -approach > settings.restitutionThreshold ? combineMaterials(a.material(), b.material()).restitution : 0.0;
+  const double impulse = -(1.0 + restitution) * approach / (inverseMassSum + angularTerm);
+  a.applyImpulseAtPoint(-impulse * normal, point);
+  b.applyImpulseAtPoint(impulse * normal, point);
+  return true;
+}
+
+SeedSolver::SeedSolver(const SeedSolverSettings& settings, double touchingTolerance)
+    : settings_(settings), reach_(touchingTolerance) {}
+
+void SeedSolver::beginStep(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                           const StepContext& step) {
+  for (std::size_t id = 0; id < bodies.size(); ++id)
+    if (movable[id]) bodies[id].integrateVelocity(step.dt);
+}
+
+// Velocities are already this step's, so the box moves by v dt; the tight box
+// is not swept (the seed solver has no speculative contacts to find).
+PredictedMotion SeedSolver::predictMotion(const RigidBody& body, const StepContext& step) const {
+  return {body.collider().worldBounds(body.transform()), body.linearVelocity() * step.dt};
+}
+
+// Contacts never involve frozen bodies: their proxies leave the broad phase
+// before it runs.
+SolverStepReport SeedSolver::solve(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                                   const std::vector<Contact>& contacts, const StepContext& step) {
+  SolverStepReport report;
+  for (const Contact& contact : contacts)
+    if (respondToContact(bodies[contact.a], bodies[contact.b], contact.result, settings_)) ++report.responses;
+  for (std::size_t id = 0; id < bodies.size(); ++id)
+    if (movable[id]) bodies[id].integratePosition(step.dt);
+  return report;
+}
+
+std::vector<ShownContact> SeedSolver::touchedPoints(const std::vector<Contact>& contacts) const {
+  return physdbg::touchedPoints(contacts);
+}
+
+}  // namespace physdbg

@@ -1,0 +1,39 @@
+#pragma once
+// The design's solver. Its step keeps the design's order: velocities are
+// integrated before the narrow phase, every touching contact then gets the
+// design's response (CollisionResponseWithRotation) one after another, and
+// positions move last. The response, for one contact: skip it when the bodies
+// already separate at the contact point, push them apart along the normal in
+// proportion to their inverse masses, then apply one impulse through the
+// contact point that uses both inverse world inertia tensors and the pair's
+// restitution. No friction, no manifolds, nothing kept between steps.
+#include "engine/solver/contact_solver.h"
+
+namespace physdbg {
+
+// Returns false when the pair was skipped because it already separates.
+bool respondToContact(RigidBody& a, RigidBody& b, const ContactResult& contact, const SeedSolverSettings& settings);
+
+class SeedSolver final : public ContactSolver {
+ public:
+  SeedSolver(const SeedSolverSettings& settings, double touchingTolerance);
+
+  void beginStep(std::vector<RigidBody>& bodies, const std::vector<bool>& movable, const StepContext& step) override;
+  PredictedMotion predictMotion(const RigidBody& body, const StepContext& step) const override;
+  double contactReach(const RigidBody&, const RigidBody&, const StepContext&) const override { return reach_; }
+  double touchingGap() const override { return 0.0; }
+  void clearContacts() override {}
+  int addCandidate(const Contact&, const RigidBody&, const RigidBody&, double) override { return 0; }
+  SolverStepReport solve(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                         const std::vector<Contact>& contacts, const StepContext& step) override;
+  const std::vector<Contact>& eventContacts(const std::vector<Contact>& contacts) override { return contacts; }
+  std::vector<ShownContact> touchedPoints(const std::vector<Contact>& contacts) const override;
+  const std::vector<ContactManifold>& manifolds() const override { return noManifolds_; }
+
+ private:
+  SeedSolverSettings settings_;
+  double reach_;  // the narrow phase's touching tolerance: only touching pairs matter
+  std::vector<ContactManifold> noManifolds_;
+};
+
+}  // namespace physdbg
