@@ -13,20 +13,6 @@
 namespace physdbg {
 namespace {
 
-Mat3 skew(const Vec3& v) {
-  Mat3 m;
-  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return m;
-}
-
-// Rotation by the vector `rotation` (axis times angle), exactly: keeps a spin
-// about a fixed axis exact and the quaternion unit-length to round-off.
-Quat rotationFromVector(const Vec3& rotation) {
-  const double angle = rotation.norm();
-  if (angle < 1e-300) return Quat::Identity();
-  return Quat(Eigen::AngleAxisd(angle, rotation / angle));
-}
-
 std::string figure(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", value);
@@ -156,11 +142,6 @@ void RigidBody::applyImpulseAtPoint(const Vec3& impulse, const Vec3& point) {
   applyLocks();
 }
 
-void RigidBody::integrateVelocity(double dt, const Vec3& gravity) {
-  beginStep(gravity);
-  integrateVelocity(dt);
-}
-
 // Forces (and gravity) become this step's constant accelerations, so a step
 // cut into substeps applies them evenly; impulses act once, right away.
 void RigidBody::beginStep(const Vec3& gravity) {
@@ -181,64 +162,25 @@ void RigidBody::beginStep(const Vec3& gravity) {
   angularVelocityChange_.setZero();
 }
 
-void RigidBody::integrateVelocity(double dt) {
-  if (isStatic_) return;
-  linearVelocity_ += stepAcceleration_ * dt;
-  linearVelocity_ /= 1.0 + linearDrag_ * dt;
-  integrateAngularVelocity(dt);
-  angularVelocity_ += stepAngularAcceleration_ * dt;
-  angularVelocity_ /= 1.0 + angularDrag_ * dt;
-  applyLocks();
+MotionProperties RigidBody::motionProperties() const {
+  MotionProperties properties;
+  properties.acceleration = stepAcceleration_;
+  properties.angularAcceleration = stepAngularAcceleration_;
+  properties.linearDrag = linearDrag_;
+  properties.angularDrag = angularDrag_;
+  properties.localInertia = localInertia_;
+  properties.isotropic = isotropic_;
+  properties.lockTranslation = lockTranslation_;
+  properties.lockRotation = lockRotation_;
+  return properties;
 }
 
-// Torque-free part of Euler's equations, dPi/dt = Pi x w with Pi = I w in the
-// body frame, by the implicit midpoint rule. Explicit Euler gains energy on a
-// tumbling box (MuJoCo measured +9%); the midpoint rule keeps both invariants,
-// |Pi| and the kinetic energy, to the Newton tolerance. Its solution satisfies
-// Pi1 = C Pi0 with C the Cayley rotation of -dt*wm, so turning the body by C's
-// inverse (angle 2 atan(dt |wm| / 2) about wm) keeps the world angular momentum
-// R Pi exactly too. A spin about a principal axis (w x Iw = 0) is unchanged.
-void RigidBody::integrateAngularVelocity(double dt) {
-  // With a rotation lock the body is constrained, not free: the torque-free
-  // equations do not apply, and the locks alone decide the spin. An
-  // isotropic body (cube, sphere) has w x Iw = 0 for every w.
-  const bool rotationLocked = lockRotation_[0] || lockRotation_[1] || lockRotation_[2];
-  const Vec3 start = isotropic_ || rotationLocked ? Vec3::Zero() : Vec3(orientation_.conjugate() * angularVelocity_);
-  const Mat3& inertia = localInertia_;
-  if (start.cross(inertia * start).squaredNorm() == 0.0) {
-    orientationSpin_ = angularVelocity_;
-    spinAfterGyroscopicStep_ = angularVelocity_;
-    return;
-  }
-  Vec3 end = start;
-  for (int iteration = 0; iteration < 10; ++iteration) {
-    const Vec3 middle = 0.5 * (start + end);
-    const Vec3 residual = inertia * (end - start) + dt * middle.cross(inertia * middle);
-    const Mat3 jacobian = inertia + 0.5 * dt * (skew(middle) * inertia - skew(inertia * middle));
-    const Vec3 step = jacobian.partialPivLu().solve(residual);
-    end -= step;
-    if (step.norm() <= 1e-15 * end.norm()) break;
-  }
-  const Vec3 middle = orientation_ * (0.5 * (start + end));
-  const double speed = middle.norm();
-  orientationSpin_ = middle * (2.0 * std::atan(0.5 * dt * speed) / (dt * speed));
-  angularVelocity_ = orientation_ * end;
-  spinAfterGyroscopicStep_ = angularVelocity_;
-}
-
-// The orientation turns by the gyroscopic step's rotation plus whatever the
-// torques, impulses and contacts added to the angular velocity since then.
-void RigidBody::integratePosition(double dt) {
+void RigidBody::setMotion(const BodyMotion& motion) {
   if (isStatic_) return;
-  position_ += linearVelocity_ * dt;
-  const Vec3 spin = orientationSpin_ + (angularVelocity_ - spinAfterGyroscopicStep_);
-  const Quat turn = rotationFromVector(spin * dt);
-  orientation_ = (turn * orientation_).normalized();
-  // The midpoint rule advanced the body-frame spin; it turns with the body.
-  // (After a spin about a principal axis, `turn` is about w and leaves it be.)
-  if (orientationSpin_ != spinAfterGyroscopicStep_) angularVelocity_ = turn * angularVelocity_;
-  orientationSpin_.setZero();
-  spinAfterGyroscopicStep_.setZero();
+  position_ = motion.position;
+  orientation_ = motion.orientation;
+  linearVelocity_ = motion.linearVelocity;
+  angularVelocity_ = motion.angularVelocity;
 }
 
 void RigidBody::translate(const Vec3& delta) {
@@ -258,11 +200,7 @@ void RigidBody::rotate(const Vec3& rotation) {
 }
 
 void RigidBody::applyLocks() {
-  if (!hasLocks_) return;
-  for (int axis = 0; axis < 3; ++axis) {
-    if (lockTranslation_[axis]) linearVelocity_[axis] = 0.0;
-    if (lockRotation_[axis]) angularVelocity_[axis] = 0.0;
-  }
+  if (hasLocks_) lockVelocities(linearVelocity_, angularVelocity_, lockTranslation_, lockRotation_);
 }
 
 bool RigidBody::hasPendingForces() const {

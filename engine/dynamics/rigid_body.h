@@ -1,12 +1,14 @@
 #pragma once
 // A rigid body as the design's CustomRigidbody: forces and impulses are
-// accumulated by addForce/addTorque with a ForceMode, then consumed by
-// semi-implicit Euler (velocity first, then position with the new velocity).
+// accumulated by addForce/addTorque with a ForceMode; beginStep turns them
+// into the step's accelerations, and the solver integrates a copy of the
+// body's motion with them (motion.h) and writes it back.
 #include <array>
 #include <memory>
 
 #include "engine/colliders/collider.h"
 #include "engine/dynamics/material.h"
+#include "engine/dynamics/motion.h"
 #include "engine/math.h"
 
 namespace physdbg {
@@ -27,7 +29,7 @@ struct BodyDefinition {
   double mass = 1.0;
   bool isStatic = false;
   bool useGravity = true;
-  double linearDrag = 0.0;   // 1/s: v decays as v / (1 + drag * dt) per step
+  double linearDrag = 0.0;   // 1/s: v / (1 + drag h) per integration of length h (motion.h)
   double angularDrag = 0.0;  // 1/s: same rule for the angular velocity
   Material material;
   std::array<bool, 3> lockTranslation{false, false, false};  // world axes
@@ -88,18 +90,15 @@ class RigidBody {
   // Applies an impulse at a world point right away (collision response).
   void applyImpulseAtPoint(const Vec3& impulse, const Vec3& point);
 
-  // Semi-implicit Euler, first half: accumulated forces and impulses (and
-  // gravity, when used) change the velocities, then drag, then axis locks.
-  // Clears the accumulators. Same as beginStep then integrateVelocity(dt).
-  void integrateVelocity(double dt, const Vec3& gravity);
   // Consumes the accumulators: impulses change the velocities now, forces and
-  // gravity become the accelerations that integrateVelocity(h) applies.
+  // gravity become the accelerations the step integrates with.
   void beginStep(const Vec3& gravity);
-  // One (sub)step of the velocity half with this step's accelerations.
-  void integrateVelocity(double dt);
   const Vec3& stepAcceleration() const { return stepAcceleration_; }
-  // Second half: position and orientation move with the new velocities.
-  void integratePosition(double dt);
+  // A copy of the pose and velocities to integrate, what integration reads,
+  // and the way back (taken as it is: integratePosition keeps it unit length).
+  BodyMotion motion() const { return {position_, orientation_, linearVelocity_, angularVelocity_}; }
+  MotionProperties motionProperties() const;
+  void setMotion(const BodyMotion& motion);
 
   // Zeroes velocities along locked axes. Locks act on velocities, so a locked
   // coordinate keeps its exact initial value.
@@ -111,8 +110,6 @@ class RigidBody {
   bool hasFiniteState() const;
 
  private:
-  void integrateAngularVelocity(double dt);
-
   std::shared_ptr<const Collider> collider_;
   Vec3 position_, linearVelocity_, angularVelocity_;
   Quat orientation_;
@@ -136,10 +133,6 @@ class RigidBody {
 
   Vec3 stepAcceleration_ = Vec3::Zero();         // m/s^2, from beginStep
   Vec3 stepAngularAcceleration_ = Vec3::Zero();  // rad/s^2, world, from beginStep
-
-  // Set by the gyroscopic step, consumed by integratePosition (see there).
-  Vec3 orientationSpin_ = Vec3::Zero();
-  Vec3 spinAfterGyroscopicStep_ = Vec3::Zero();
 };
 
 }  // namespace physdbg

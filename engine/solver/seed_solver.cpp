@@ -39,10 +39,17 @@ bool respondToContact(RigidBody& a, RigidBody& b, const ContactResult& contact, 
 SeedSolver::SeedSolver(const SeedSolverSettings& settings, double touchingTolerance)
     : settings_(settings), reach_(touchingTolerance) {}
 
+// The gyroscopic spin each body's velocity integration leaves is kept until
+// its position moves in solve; a body woken in between keeps a zero one.
 void SeedSolver::beginStep(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                            const StepContext& step) {
-  for (std::size_t id = 0; id < bodies.size(); ++id)
-    if (movable[id]) bodies[id].integrateVelocity(step.dt);
+  motions_.assign(bodies.size(), BodyMotion{});
+  for (std::size_t id = 0; id < bodies.size(); ++id) {
+    if (!movable[id]) continue;
+    motions_[id] = bodies[id].motion();
+    integrateVelocity(motions_[id], bodies[id].motionProperties(), step.dt);
+    bodies[id].setMotion(motions_[id]);
+  }
 }
 
 // Velocities are already this step's, so the box moves by v dt; the tight box
@@ -59,8 +66,18 @@ SolverStepReport SeedSolver::solve(std::vector<RigidBody>& bodies, const std::ve
   for (const Contact& contact : contacts)
     if (respondToContact(bodies[contact.a], bodies[contact.b], contact.result, settings_)) ++report.responses;
   for (std::size_t id = 0; id < bodies.size(); ++id)
-    if (movable[id]) bodies[id].integratePosition(step.dt);
+    if (movable[id]) moveBody(bodies[id], motions_[id], step.dt);
   return report;
+}
+
+// The responses changed the body since beginStep; only the spin is taken
+// from the velocity half.
+void SeedSolver::moveBody(RigidBody& body, const BodyMotion& integrated, double dt) {
+  BodyMotion motion = body.motion();
+  motion.orientationSpin = integrated.orientationSpin;
+  motion.spinAfterGyroscopicStep = integrated.spinAfterGyroscopicStep;
+  integratePosition(motion, dt);
+  body.setMotion(motion);
 }
 
 std::vector<ShownContact> SeedSolver::touchedPoints(const std::vector<Contact>& contacts) const {

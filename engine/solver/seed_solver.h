@@ -31,7 +31,10 @@ class SeedSolver final : public ContactSolver {
   const std::vector<ContactManifold>& manifolds() const override { return noManifolds_; }
 
  private:
+  static void moveBody(RigidBody& body, const BodyMotion& integrated, double dt);
+
   SeedSolverSettings settings_;
+  std::vector<BodyMotion> motions_;  // per body: this step's velocity half
   double reach_;  // the narrow phase's touching tolerance: only touching pairs matter
   std::vector<ContactManifold> noManifolds_;
 };

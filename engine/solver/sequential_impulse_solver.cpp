@@ -44,28 +44,29 @@ double effectiveMass(double inverseMassSum, const Mat3& inverseInertiaA, const M
 // Current gap at a manifold point, from its anchors on both bodies.
 inline double SequentialImpulseSolver::separation(const ContactManifold& manifold, const ManifoldPoint& point) const {
   const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-  return ((b.position + b.rotation * point.localB) - (a.position + a.rotation * point.localA)).dot(manifold.normal);
+  return ((b.motion.position + b.rotation * point.localB) - (a.motion.position + a.rotation * point.localA)).dot(manifold.normal);
 }
 
 inline Vec3 SequentialImpulseSolver::relativeVelocity(const ContactManifold& manifold, const PointConstraint& c) const {
   const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-  return (b.linearVelocity + b.angularVelocity.cross(c.armB)) - (a.linearVelocity + a.angularVelocity.cross(c.armA));
+  return (b.motion.linearVelocity + b.motion.angularVelocity.cross(c.armB)) -
+         (a.motion.linearVelocity + a.motion.angularVelocity.cross(c.armA));
 }
 
 inline double SequentialImpulseSolver::rowVelocity(const ContactManifold& manifold, const PointConstraint& c,
                                                    const Vec3& direction, int row) const {
   const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-  return (b.linearVelocity - a.linearVelocity).dot(direction) + b.angularVelocity.dot(c.crossB[row]) -
-         a.angularVelocity.dot(c.crossA[row]);
+  return (b.motion.linearVelocity - a.motion.linearVelocity).dot(direction) +
+         b.motion.angularVelocity.dot(c.crossB[row]) - a.motion.angularVelocity.dot(c.crossA[row]);
 }
 
 inline void SequentialImpulseSolver::applyRow(const ContactManifold& manifold, const PointConstraint& c,
                                               const Vec3& direction, int row, double impulse) {
   SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-  a.linearVelocity -= (a.inverseMass * impulse) * direction.cwiseProduct(a.linearMask);
-  a.angularVelocity -= impulse * c.turnA[row];
-  b.linearVelocity += (b.inverseMass * impulse) * direction.cwiseProduct(b.linearMask);
-  b.angularVelocity += impulse * c.turnB[row];
+  a.motion.linearVelocity -= (a.inverseMass * impulse) * direction.cwiseProduct(a.linearMask);
+  a.motion.angularVelocity -= impulse * c.turnA[row];
+  b.motion.linearVelocity += (b.inverseMass * impulse) * direction.cwiseProduct(b.linearMask);
+  b.motion.angularVelocity += impulse * c.turnB[row];
 }
 
 // The normal row of a point, also added to the step's total there (what the
@@ -236,35 +237,31 @@ void SequentialImpulseSolver::integrateFreeBodies(std::vector<RigidBody>& bodies
                                                   const std::vector<bool>& inIsland, const SubstepContext& substeps) {
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (!movable[i] || inIsland[i]) continue;
+    BodyMotion motion = bodies[i].motion();
+    const MotionProperties properties = bodies[i].motionProperties();
     for (int substep = 0; substep < substeps.count; ++substep) {
-      bodies[i].integrateVelocity(substeps.h);
-      bodies[i].integratePosition(substeps.h);
+      integrateVelocity(motion, properties, substeps.h);
+      integratePosition(motion, substeps.h);
     }
+    bodies[i].setMotion(motion);
     lastSubstep_[i] = substeps.h;
   }
 }
 
 void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
                                           const ContactIsland& island, const SubstepContext& substeps) {
-  const double h = substeps.h;
   measureGaps(manifolds, island);
   for (int substep = 0; substep < substeps.count; ++substep) {
-    for (std::uint32_t id : island.bodies) bodies[id].integrateVelocity(h);
-    loadVelocities(bodies, island);
+    integrateVelocities(island, substeps.h);
     if (settings_.warmStarting) warmStart(manifolds, island);
     for (int iteration = 0; iteration < settings_.velocityIterations; ++iteration)
       solve(manifolds, island, substeps, true, (substep + iteration) % 2 == 1);
-    storeVelocities(bodies, island);
-    for (std::uint32_t id : island.bodies) bodies[id].integratePosition(h);
-    loadPoses(bodies, island);
+    integratePositions(island, substeps.h);
     measureGaps(manifolds, island);
-    loadVelocities(bodies, island);
     solve(manifolds, island, substeps, false, substep % 2 == 0);
-    storeVelocities(bodies, island);
   }
-  loadVelocities(bodies, island);
   applyRestitution(manifolds, island);
-  storeVelocities(bodies, island);
+  for (std::uint32_t id : island.bodies) bodies[id].setMotion(solverBodies_[id].motion);
 }
 
 // The contact frequency is the settings' unless the most loaded touching
@@ -333,6 +330,7 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
                                       std::vector<ContactManifold>& manifolds) {
   const SolverSettings& settings = settings_;
   solverBodies_.resize(bodies.size());
+  motionProperties_.resize(bodies.size());
   std::vector<bool> listed(bodies.size(), false);
   for (const ContactManifold& manifold : manifolds) {
     for (std::uint32_t id : {manifold.a, manifold.b}) {
@@ -346,9 +344,8 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
         body.linearMask[axis] = source.lockTranslation()[axis] ? 0.0 : 1.0;
         body.angularMask[axis] = source.lockRotation()[axis] ? 0.0 : 1.0;
       }
-      body.linearVelocity = source.linearVelocity();
-      body.angularVelocity = source.angularVelocity();
-      body.position = source.position();
+      body.motion = source.motion();
+      motionProperties_[id] = source.motionProperties();
       Vec3 extents = source.collider().localBounds().halfExtents() * 2.0;
       std::sort(extents.data(), extents.data() + 3);
       body.size = extents[1];
@@ -397,24 +394,15 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
   }
 }
 
-void SequentialImpulseSolver::loadVelocities(const std::vector<RigidBody>& bodies, const ContactIsland& island) {
-  for (std::uint32_t id : island.bodies) {
-    solverBodies_[id].linearVelocity = bodies[id].linearVelocity();
-    solverBodies_[id].angularVelocity = bodies[id].angularVelocity();
-  }
+void SequentialImpulseSolver::integrateVelocities(const ContactIsland& island, double h) {
+  for (std::uint32_t id : island.bodies) integrateVelocity(solverBodies_[id].motion, motionProperties_[id], h);
 }
 
-void SequentialImpulseSolver::storeVelocities(std::vector<RigidBody>& bodies, const ContactIsland& island) const {
+void SequentialImpulseSolver::integratePositions(const ContactIsland& island, double h) {
   for (std::uint32_t id : island.bodies) {
-    bodies[id].setLinearVelocity(solverBodies_[id].linearVelocity);
-    bodies[id].setAngularVelocity(solverBodies_[id].angularVelocity);
-  }
-}
-
-void SequentialImpulseSolver::loadPoses(const std::vector<RigidBody>& bodies, const ContactIsland& island) {
-  for (std::uint32_t id : island.bodies) {
-    solverBodies_[id].position = bodies[id].position();
-    solverBodies_[id].rotation = bodies[id].orientation().toRotationMatrix();
+    SolverBody& body = solverBodies_[id];
+    integratePosition(body.motion, h);
+    body.rotation = body.motion.orientation.toRotationMatrix();
   }
 }
 

@@ -64,12 +64,12 @@ class SequentialImpulseSolver final : public ContactSolver {
     double largestImpulse = 0;  // did this point ever push (restitution needs it)
     double gap = 0;             // separation at the current poses (measureGaps)
   };
-  // The solver's working copy of a body: velocities and the pose used to
-  // measure gaps, next to the inverse mass and the lock masks, so the inner
-  // loop touches one small struct per body.
+  // The solver's working copy of a body: its motion, integrated here through
+  // every substep and written back to the RigidBody once per island, the
+  // rotation matrix used to measure gaps, the inverse mass and the lock
+  // masks, so the inner loop touches one struct per body.
   struct SolverBody {
-    Vec3 linearVelocity = Vec3::Zero(), angularVelocity = Vec3::Zero();
-    Vec3 position = Vec3::Zero();
+    BodyMotion motion;
     Mat3 rotation = Mat3::Identity();
     Mat3 inverseInertia = Mat3::Zero();
     Vec3 linearMask = Vec3::Ones(), angularMask = Vec3::Ones();  // 0 on locked axes
@@ -88,9 +88,8 @@ class SequentialImpulseSolver final : public ContactSolver {
                    const SubstepContext& substeps);
   void prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                std::vector<ContactManifold>& manifolds);
-  void loadVelocities(const std::vector<RigidBody>& bodies, const ContactIsland& island);
-  void storeVelocities(std::vector<RigidBody>& bodies, const ContactIsland& island) const;
-  void loadPoses(const std::vector<RigidBody>& bodies, const ContactIsland& island);
+  void integrateVelocities(const ContactIsland& island, double h);
+  void integratePositions(const ContactIsland& island, double h);
   void measureGaps(const std::vector<ContactManifold>& manifolds, const ContactIsland& island);
   void warmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island);
   void prepareApproaches(const std::vector<ContactManifold>& manifolds);
@@ -119,6 +118,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   ManifoldScratch manifoldScratch_;
   std::vector<Contact> eventContacts_;  // this step's contacts plus speculative impacts
   std::vector<SolverBody> solverBodies_;
+  std::vector<MotionProperties> motionProperties_;  // per body in a manifold, from prepare
   std::vector<PointConstraint> constraints_;      // maxPoints per manifold
   std::vector<double> touching_;                  // per manifold: largest separation that holds weight, m
   std::vector<bool> approaching_;                 // per manifold: every point still apart at the start
