@@ -171,12 +171,22 @@ int readCount(const JsonReader& reader, const json& value, const std::string& pa
 
 void readSolver(const JsonReader& reader, const json& value, const std::string& path, SolverSettings& solver) {
   reader.requireObject(value, path);
-  reader.checkKeys(value, path, {"kind", "iterations", "substeps", "max_substeps"});
+  reader.checkKeys(value, path,
+                   {"kind", "iterations", "substeps", "max_substeps", "slop", "bounce_threshold", "position_correction"});
   if (value.contains("kind")) {
     const std::string kind = reader.string(value["kind"], path + ".kind");
     if (kind == "seed") solver.kind = SolverKind::Seed;
     else if (kind == "sequential_impulse") solver.kind = SolverKind::SequentialImpulse;
     else reader.fail(path + ".kind", "must be \"seed\" or \"sequential_impulse\", got \"" + excerpt(kind) + "\"");
+  }
+  if (value.contains("slop")) solver.linearSlop = reader.inRange(value["slop"], path + ".slop", 0.0, 1.0);
+  if (value.contains("bounce_threshold"))
+    solver.restitutionThreshold = reader.inRange(value["bounce_threshold"], path + ".bounce_threshold", 0.0, 1e3);
+  if (value.contains("position_correction")) {
+    if (solver.kind != SolverKind::Seed)
+      reader.fail(path + ".position_correction", "applies to the seed solver only (set \"kind\": \"seed\")");
+    solver.seed.positionCorrection =
+        reader.inRange(value["position_correction"], path + ".position_correction", 0.0, 1.0);
   }
   if (value.contains("iterations"))
     solver.velocityIterations = readCount(reader, value["iterations"], path + ".iterations", limits::maxIterations);
@@ -209,6 +219,17 @@ SceneCamera readCamera(const JsonReader& reader, const json& value, const std::s
   return camera;
 }
 
+CombineRule readCombineRule(const JsonReader& reader, const json& value, const std::string& path) {
+  const std::string rule = reader.string(value, path);
+  if (rule == "average") return CombineRule::Average;
+  if (rule == "minimum") return CombineRule::Minimum;
+  if (rule == "maximum") return CombineRule::Maximum;
+  if (rule == "multiply") return CombineRule::Multiply;
+  if (rule == "geometric_mean") return CombineRule::GeometricMean;
+  reader.fail(path, "must be \"average\", \"minimum\", \"maximum\", \"multiply\" or \"geometric_mean\", got \"" +
+                        excerpt(rule) + "\"");
+}
+
 void readWorldKeys(const JsonReader& reader, const json& root, SceneDescription& scene) {
   if (root.contains("gravity")) scene.world.gravity = reader.vec3(root["gravity"], "gravity");
   if (root.contains("dt")) scene.world.dt = reader.inRange(root["dt"], "dt", limits::minDt, limits::maxDt);
@@ -221,6 +242,10 @@ void readWorldKeys(const JsonReader& reader, const json& root, SceneDescription&
     else reader.fail("broadphase", "must be \"tree\" or \"brute_force\", got \"" + excerpt(kind) + "\"");
   }
   if (root.contains("solver")) readSolver(reader, root["solver"], "solver", scene.world.solver);
+  if (root.contains("restitution_combine"))
+    scene.world.solver.combine.restitution = readCombineRule(reader, root["restitution_combine"], "restitution_combine");
+  if (root.contains("friction_combine"))
+    scene.world.solver.combine.friction = readCombineRule(reader, root["friction_combine"], "friction_combine");
 }
 
 }  // namespace
@@ -230,7 +255,7 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
   const json root = parseBoundedJson(jsonText, sourceName);
   reader.requireObject(root, "");
   reader.checkKeys(root, "", {"name", "description", "gravity", "dt", "steps", "bodies", "camera", "layers",
-                              "allow_sleep", "broadphase", "solver"});
+                              "allow_sleep", "broadphase", "solver", "restitution_combine", "friction_combine"});
   SceneDescription scene;
   scene.source = sourceName;
   scene.name = std::filesystem::path(sourceName).stem().string();

@@ -27,7 +27,7 @@ SubstepContext substepContext(const StepContext& step, int count, double contact
 std::unique_ptr<ContactSolver> makeContactSolver(const SolverSettings& settings,
                                                  const NarrowPhaseOptions& narrowPhase) {
   switch (settings.kind) {
-    case SolverKind::Seed: return std::make_unique<SeedSolver>(settings.seed, narrowPhase.touchingTolerance);
+    case SolverKind::Seed: return std::make_unique<SeedSolver>(settings, narrowPhase.touchingTolerance);
     case SolverKind::SequentialImpulse: return std::make_unique<SequentialImpulseSolver>(settings);
   }
   return nullptr;

@@ -2,14 +2,30 @@
 
 #include <algorithm>
 
-#include "engine/contacts/material_combine.h"
 
 namespace physdbg {
 
-bool respondToContact(RigidBody& a, RigidBody& b, const ContactResult& contact, const SeedSolverSettings& settings) {
+namespace {
+
+Vec3 freeAxes(const std::array<bool, 3>& locks) {
+  return {locks[0] ? 0.0 : 1.0, locks[1] ? 0.0 : 1.0, locks[2] ? 0.0 : 1.0};
+}
+
+// What a unit impulse along `normal` at `arm` changes in the body's velocity
+// along the normal there, with locked axes taking no part.
+double normalMobility(const RigidBody& body, const Vec3& arm, const Vec3& normal) {
+  const Vec3 torque = arm.cross(normal);
+  const Vec3 turn = (body.worldInverseInertia() * torque).cwiseProduct(freeAxes(body.lockRotation()));
+  return body.inverseMass() * normal.cwiseProduct(freeAxes(body.lockTranslation())).dot(normal) + torque.dot(turn);
+}
+
+}  // namespace
+
+// Each body is pushed at its own contact point, as the design's EPA gives
+// them: A at its deepest point inside B, B at its deepest point inside A.
+bool respondToContact(RigidBody& a, RigidBody& b, const ContactResult& contact, const SolverSettings& settings) {
   const Vec3& normal = contact.normal;  // from A to B
-  const Vec3 point = 0.5 * (contact.pointA + contact.pointB);
-  const Vec3 armA = point - a.position(), armB = point - b.position();
+  const Vec3 armA = contact.pointA - a.position(), armB = contact.pointB - b.position();
   const Vec3 relativeVelocity = (b.linearVelocity() + b.angularVelocity().cross(armB)) -
                                 (a.linearVelocity() + a.angularVelocity().cross(armA));
   const double approach = relativeVelocity.dot(normal);
@@ -18,25 +34,26 @@ bool respondToContact(RigidBody& a, RigidBody& b, const ContactResult& contact, 
   const double inverseMassSum = a.inverseMass() + b.inverseMass();
   if (inverseMassSum == 0.0) return false;
 
-  const double excess = std::max(contact.depth - settings.allowedPenetration, 0.0);
+  const double excess = std::max(contact.depth - settings.linearSlop, 0.0);
   if (excess > 0.0) {
-    const Vec3 push = normal * (settings.positionCorrection * excess / inverseMassSum);
+    const Vec3 push = normal * (settings.seed.positionCorrection * excess / inverseMassSum);
     a.translate(-push * a.inverseMass());
     b.translate(push * b.inverseMass());
   }
 
-  const Mat3 inverseInertiaA = a.worldInverseInertia(), inverseInertiaB = b.worldInverseInertia();
-  const double angularTerm = normal.dot((inverseInertiaA * armA.cross(normal)).cross(armA) +
-                                        (inverseInertiaB * armB.cross(normal)).cross(armB));
+  const double mobility = normalMobility(a, armA, normal) + normalMobility(b, armB, normal);
+  if (!(mobility > 0.0)) return false;  // every axis that could separate them is locked
   const double restitution =
-      -approach > settings.restitutionThreshold ? combineMaterials(a.material(), b.material()).restitution : 0.0;
-  const double impulse = -(1.0 + restitution) * approach / (inverseMassSum + angularTerm);
-  a.applyImpulseAtPoint(-impulse * normal, point);
-  b.applyImpulseAtPoint(impulse * normal, point);
+      -approach > settings.restitutionThreshold
+          ? combine(settings.restitutionCombine(), a.material().restitution, b.material().restitution)
+          : 0.0;
+  const double impulse = -(1.0 + restitution) * approach / mobility;
+  a.applyImpulseAtPoint(-impulse * normal, contact.pointA);
+  b.applyImpulseAtPoint(impulse * normal, contact.pointB);
   return true;
 }
 
-SeedSolver::SeedSolver(const SeedSolverSettings& settings, double touchingTolerance)
+SeedSolver::SeedSolver(const SolverSettings& settings, double touchingTolerance)
     : settings_(settings), reach_(touchingTolerance) {}
 
 // The gyroscopic spin each body's velocity integration leaves is kept until

@@ -4,19 +4,20 @@
 // design's response (CollisionResponseWithRotation) one after another, and
 // positions move last. The response, for one contact: skip it when the bodies
 // already separate at the contact point, push them apart along the normal in
-// proportion to their inverse masses, then apply one impulse through the
-// contact point that uses both inverse world inertia tensors and the pair's
-// restitution. No friction, no manifolds, nothing kept between steps.
+// proportion to their inverse masses, then apply one impulse through each
+// body's contact point that uses both inverse world inertia tensors (locked
+// axes taking no part) and the pair's restitution. No friction, no
+// manifolds, nothing kept between steps.
 #include "engine/solver/contact_solver.h"
 
 namespace physdbg {
 
 // Returns false when the pair was skipped because it already separates.
-bool respondToContact(RigidBody& a, RigidBody& b, const ContactResult& contact, const SeedSolverSettings& settings);
+bool respondToContact(RigidBody& a, RigidBody& b, const ContactResult& contact, const SolverSettings& settings);
 
 class SeedSolver final : public ContactSolver {
  public:
-  SeedSolver(const SeedSolverSettings& settings, double touchingTolerance);
+  SeedSolver(const SolverSettings& settings, double touchingTolerance);
 
   void beginStep(std::vector<RigidBody>& bodies, const std::vector<bool>& movable, const StepContext& step) override;
   PredictedMotion predictMotion(const RigidBody& body, const StepContext& step) const override;
@@ -33,7 +34,7 @@ class SeedSolver final : public ContactSolver {
  private:
   static void moveBody(RigidBody& body, const BodyMotion& integrated, double dt);
 
-  SeedSolverSettings settings_;
+  SolverSettings settings_;
   std::vector<BodyMotion> motions_;  // per body: this step's velocity half
   double reach_;  // the narrow phase's touching tolerance: only touching pairs matter
   std::vector<ContactManifold> noManifolds_;

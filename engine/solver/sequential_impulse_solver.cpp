@@ -358,7 +358,8 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
     const RigidBody &a = bodies[manifold.a], &b = bodies[manifold.b];
     const SolverBody &bodyA = solverBodies_[manifold.a], &bodyB = solverBodies_[manifold.b];
     const double inverseMassSum = bodyA.inverseMass + bodyB.inverseMass;
-    const CombinedMaterial material = combineMaterials(a.material(), b.material());
+    const CombinedMaterial material =
+        combineMaterials(a.material(), b.material(), settings.restitutionCombine(), settings.frictionCombine());
     for (int p = 0; p < manifold.pointCount; ++p) {
       ManifoldPoint& point = manifold.points[p];
       PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];

@@ -1,5 +1,7 @@
 #pragma once
 // Which contact solver a world uses and how hard it works.
+#include "engine/contacts/material_combine.h"
+
 namespace physdbg {
 
 enum class SolverKind {
@@ -7,23 +9,36 @@ enum class SolverKind {
   SequentialImpulse,  // manifolds, friction, soft contacts, substeps (sequential_impulse_solver.h)
 };
 
-// The seed solver's parameters: the design's response, one contact at a time.
+// The seed solver's own parameter: the design's response, one contact at a time.
 struct SeedSolverSettings {
-  // Share of the penetration (beyond the allowed one) removed per step: the
-  // design's editable damping. 1 removes it at once, smaller is softer.
+  // Share of the penetration (beyond linearSlop) removed per step: the
+  // design's editable position-correction damping. 1 removes it at once,
+  // smaller is softer.
   double positionCorrection = 0.8;
-  // Penetration left in place so a resting contact stays a contact and does
-  // not flicker between touching and separated every step.
-  double allowedPenetration = 0.005;
-  // Below this approach speed (m/s) contacts do not bounce: a resting body
-  // with restitution would otherwise hop on gravity's dt*g every step.
-  double restitutionThreshold = 0.2;
 };
 
-// Everything below `seed` belongs to the sequential-impulse solver.
 struct SolverSettings {
   SolverKind kind = SolverKind::SequentialImpulse;
+
+  // Both solvers.
+  // Metres. Seed: the penetration left in place so a resting contact stays a
+  // contact instead of flickering every step (the design's 5 mm allowance).
+  // Sequential impulses: bodies this close count as touching (events, red
+  // boxes), and contacts are built from 4 slops apart so resting pairs are
+  // found before they touch.
+  double linearSlop = 0.005;
+  // Approach speeds below this (m/s) do not bounce: a resting body with
+  // restitution would otherwise hop on gravity's dt*g every step.
+  double restitutionThreshold = 0.2;
+  // How a pair's restitution and friction combine; unset takes the solver's
+  // default (material_combine.h).
+  CombineRules combine;
+  CombineRule restitutionCombine() const;
+  CombineRule frictionCombine() const;
+
   SeedSolverSettings seed;
+
+  // The sequential-impulse solver.
   // The step is cut into substeps; each integrates velocities, solves the
   // contacts `velocityIterations` times with soft position feedback,
   // integrates positions, then relaxes once without feedback. Substeps
@@ -31,10 +46,6 @@ struct SolverSettings {
   int substeps = 8;
   int velocityIterations = 2;
   bool warmStarting = true;
-  // Metres. Bodies this close count as touching (events, red boxes), and
-  // contacts are built from 4 slops apart so resting pairs are found before
-  // they touch.
-  double linearSlop = 0.005;
   // Soft contact: overlap is pushed out like a spring of this frequency
   // (never above a quarter of the substep rate, where it would ring) and
   // damping ratio, at most maxPushSpeed. Position error never becomes bounce:
@@ -54,10 +65,16 @@ struct SolverSettings {
   double restingOverlap = 0.0025;
   double relativeRestingOverlap = 0.02;
   int maxSubsteps = 32;
-  // Approach speeds below this (m/s) do not bounce.
-  double restitutionThreshold = 0.2;
   // Tangential speeds below this (m/s) use static friction, above it dynamic.
   double stickingSpeed = 0.02;
 };
+
+inline CombineRule SolverSettings::restitutionCombine() const {
+  return combine.restitution.value_or(kind == SolverKind::Seed ? CombineRule::Average : CombineRule::Maximum);
+}
+
+inline CombineRule SolverSettings::frictionCombine() const {
+  return combine.friction.value_or(kind == SolverKind::Seed ? CombineRule::Average : CombineRule::GeometricMean);
+}
 
 }  // namespace physdbg

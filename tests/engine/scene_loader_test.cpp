@@ -136,6 +136,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"bad lock", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "lock_rotation": [true]}]})",
                  "lock_rotation"},
         BadScene{"unknown layer", R"({"layers": "shapes,glitter", "bodies": []})", "glitter"},
+        BadScene{"unknown combine rule", R"({"restitution_combine": "median", "bodies": []})",
+                 "restitution_combine"},
+        BadScene{"negative slop", R"({"solver": {"slop": -0.1}, "bodies": []})", "solver.slop"},
+        BadScene{"position correction without the seed solver",
+                 R"({"solver": {"position_correction": 0.5}, "bodies": []})", "seed solver only"},
+        BadScene{"position correction above one",
+                 R"({"solver": {"kind": "seed", "position_correction": 2}, "bodies": []})",
+                 "solver.position_correction"},
         BadScene{"fractional steps", R"({"steps": 2.5, "bodies": []})", "steps"},
         BadScene{"bad camera", R"({"camera": {"eye": [1, 1, 1], "target": [1, 1, 1]}, "bodies": []})", "camera"},
         BadScene{"empty name", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "name": ""}]})", "bodies[0].name"},
@@ -203,6 +211,18 @@ TEST(SceneLoader, CapsuleConvexAndWorldKeys) {
   EXPECT_EQ(seed.world.solver.velocityIterations, 3);
   EXPECT_EQ(seed.world.solver.substeps, 8);
   EXPECT_EQ(seed.world.solver.maxSubsteps, 8);
+  EXPECT_EQ(seed.world.solver.restitutionCombine(), CombineRule::Average);  // the design's (Unity's) default
+  EXPECT_EQ(scene.world.solver.restitutionCombine(), CombineRule::Maximum);
+  EXPECT_EQ(scene.world.solver.frictionCombine(), CombineRule::GeometricMean);
+  const SceneDescription tuned = parseScene(
+      R"({"solver": {"kind": "seed", "slop": 0.01, "bounce_threshold": 0.5, "position_correction": 0.3},
+          "restitution_combine": "multiply", "friction_combine": "minimum", "bodies": []})",
+      "t.json");
+  EXPECT_EQ(tuned.world.solver.linearSlop, 0.01);
+  EXPECT_EQ(tuned.world.solver.restitutionThreshold, 0.5);
+  EXPECT_EQ(tuned.world.solver.seed.positionCorrection, 0.3);
+  EXPECT_EQ(tuned.world.solver.restitutionCombine(), CombineRule::Multiply);
+  EXPECT_EQ(tuned.world.solver.frictionCombine(), CombineRule::Minimum);
   EXPECT_EQ(scene.world.broadPhase, BroadPhaseKind::BruteForce);
   ASSERT_EQ(scene.bodies.size(), 2u);
   EXPECT_EQ(scene.bodies[0].collider->kind(), ColliderKind::Capsule);

@@ -8,6 +8,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "engine/colliders/box_collider.h"
@@ -85,9 +87,11 @@ bool stepUntilFirstResponse(World& world, int maxSteps) {
 
 // Drops a sphere (bottom at height h above the ground) and returns the
 // highest its bottom reaches after the first bounce.
-double reboundHeight(double dt, double restitution, double height) {
+// The ground has restitution 0, so the rule is Maximum unless a test asks.
+double reboundHeight(double dt, double restitution, double height, CombineRule rule = CombineRule::Maximum) {
   WorldSettings settings = seedSettings();
   settings.dt = dt;
+  settings.solver.combine.restitution = rule;
   World world = worldOnGround(settings);
   const double radius = 0.5;
   const BodyId ball = world.addBody(sphere(radius, Vec3(0, height + radius, 0), 1.0, restitution));
@@ -128,6 +132,16 @@ TEST(WorldStep, DroppedSphereReboundsToRestitutionSquaredTimesHeight) {
     EXPECT_LT(error, previousError) << "the error must shrink with dt";
     previousError = error;
   }
+}
+
+// Unity's default rule: a ball of restitution 1 on a ground of 0 bounces
+// with (1 + 0) / 2, so it rises to a quarter of the drop height.
+TEST(WorldStep, AverageOfOneAndZeroReboundsToAQuarterOfTheHeight) {
+  const double height = 2.0, dt = 1.0 / 240.0, effective = 0.5;
+  const double impactSpeed = std::sqrt(2.0 * gravity * height);
+  const double rebound = reboundHeight(dt, 1.0, height, CombineRule::Average);
+  const double bound = (1.0 + effective + effective * effective) * impactSpeed * dt + 0.005;
+  EXPECT_NEAR(rebound, 0.25 * height, bound);
 }
 
 TEST(WorldStep, SphereWithoutRestitutionDoesNotBounce) {
@@ -197,14 +211,23 @@ TEST(WorldStep, HalfElasticHeadOnCollisionFollowsTheTextbookFormula) {
   expectHeadOnMatchesTextbook(1.0, 5.0, 4.0, 0.5, 0.5);  // unequal masses, same formula
 }
 
-TEST(WorldStep, RestitutionOfAPairIsTheLargerOfTheTwo) {
-  World world(weightless());
-  const BodyId a = world.addBody(sphere(0.5, Vec3(-1.5, 0, 0), 1.0, 0.2));
-  const BodyId b = world.addBody(sphere(0.5, Vec3(1.5, 0, 0), 1.0, 0.6));
-  world.body(a).setLinearVelocity(Vec3(2, 0, 0));
-  for (int i = 0; i < 120; ++i) world.step();
-  EXPECT_NEAR(world.body(a).linearVelocity().x(), textbookVelocityAfter(1, 2, 1, 0, 0.6), 1e-12);
-  EXPECT_NEAR(world.body(b).linearVelocity().x(), textbookVelocityAfter(1, 0, 1, 2, 0.6), 1e-12);
+// The design's solver combines restitution as Unity does by default: the
+// average of the two. Each rule is exact on a head-on collision.
+TEST(WorldStep, RestitutionOfAPairFollowsTheCombineRule) {
+  const std::pair<std::optional<CombineRule>, double> cases[] = {
+      {std::nullopt, 0.4}, {CombineRule::Average, 0.4}, {CombineRule::Maximum, 0.6}, {CombineRule::Minimum, 0.2},
+      {CombineRule::Multiply, 0.12}, {CombineRule::GeometricMean, std::sqrt(0.12)}};
+  for (const auto& [rule, restitution] : cases) {
+    WorldSettings settings = weightless();
+    settings.solver.combine.restitution = rule;
+    World world(settings);
+    const BodyId a = world.addBody(sphere(0.5, Vec3(-1.5, 0, 0), 1.0, 0.2));
+    const BodyId b = world.addBody(sphere(0.5, Vec3(1.5, 0, 0), 1.0, 0.6));
+    world.body(a).setLinearVelocity(Vec3(2, 0, 0));
+    for (int i = 0; i < 120; ++i) world.step();
+    EXPECT_NEAR(world.body(a).linearVelocity().x(), textbookVelocityAfter(1, 2, 1, 0, restitution), 1e-12);
+    EXPECT_NEAR(world.body(b).linearVelocity().x(), textbookVelocityAfter(1, 0, 1, 2, restitution), 1e-12);
+  }
 }
 
 // ---------------------------------------------------------------- correction
@@ -219,8 +242,8 @@ TEST(WorldStep, PositionCorrectionIsSplitByInverseMass) {
   const BodyId light = world.addBody(sphere(0.5, Vec3(0, 0, 0), 1.0));
   const BodyId heavy = world.addBody(sphere(0.5, Vec3(1.0 - depth, 0, 0), 3.0));
   world.step();
-  const SeedSolverSettings& response = world.settings().solver.seed;
-  const double removed = response.positionCorrection * (depth - response.allowedPenetration);
+  const SolverSettings& solver = world.settings().solver;
+  const double removed = solver.seed.positionCorrection * (depth - solver.linearSlop);
   const double lightMove = -world.body(light).position().x();
   const double heavyMove = world.body(heavy).position().x() - (1.0 - depth);
   EXPECT_NEAR(lightMove + heavyMove, removed, 1e-12);
@@ -246,12 +269,13 @@ TEST(WorldStep, PairThatAlreadySeparatesIsSkipped) {
   EXPECT_EQ(world.body(b).position(), Vec3(0.8 + 0.5 * world.settings().dt, 0, 0));
 }
 
-// Static bodies have infinite mass: a ball thrown at a static box bounces
-// back with e |v| and the box does not move at all.
+// Static bodies have infinite mass: a ball thrown at a static box of the same
+// restitution e bounces back with e |v| and the box does not move at all.
 TEST(WorldStep, StaticBodyTakesNoImpulseAndNoCorrection) {
   World world(weightless());
   BodyDefinition wall = box(Vec3(0.5, 2, 2), Vec3(2, 0, 0));
   wall.isStatic = true;
+  wall.material.restitution = 0.5;  // the ball's, so every combine rule but multiply gives 0.5
   const BodyId wallId = world.addBody(wall);
   const BodyId ball = world.addBody(sphere(0.5, Vec3(0, 0, 0), 1.0, 0.5));
   world.body(ball).setLinearVelocity(Vec3(4, 0, 0));
@@ -260,6 +284,22 @@ TEST(WorldStep, StaticBodyTakesNoImpulseAndNoCorrection) {
   EXPECT_EQ(world.body(wallId).position(), Vec3(2, 0, 0));
   EXPECT_EQ(world.body(wallId).linearVelocity(), Vec3::Zero());
   EXPECT_EQ(world.body(wallId).angularVelocity(), Vec3::Zero());
+}
+
+// A body locked along the normal cannot be pushed along it, so to the
+// impulse it has infinite mass there: a ball hitting a sphere locked in x
+// bounces back as from a wall (e = 1: -v), and the locked one keeps still.
+TEST(WorldStep, LockedAxisTakesNoPartInTheImpulse) {
+  World world(weightless());
+  const BodyId ball = world.addBody(sphere(0.5, Vec3(-1.5, 0, 0), 1.0, 1.0));
+  BodyDefinition lockedSphere = sphere(0.5, Vec3(1.5, 0, 0), 1.0, 1.0);
+  lockedSphere.lockTranslation = {true, false, false};
+  const BodyId locked = world.addBody(lockedSphere);
+  world.body(ball).setLinearVelocity(Vec3(2, 0, 0));
+  ASSERT_TRUE(stepUntilFirstResponse(world, 120));
+  EXPECT_NEAR(world.body(ball).linearVelocity().x(), -2.0, 1e-12);
+  EXPECT_EQ(world.body(locked).linearVelocity(), Vec3::Zero());
+  EXPECT_EQ(world.body(locked).position().x(), 1.5);
 }
 
 // ---------------------------------------------------------------- off-centre
@@ -273,7 +313,9 @@ TEST(WorldStep, OffCentreHitSpinsABoxWithTheAngularMomentumOfTheImpulse) {
   const double boxMass = 3.0, sphereMass = 1.0, restitution = 0.5, speed = 2.0, offset = 0.6;
   const Vec3 halfExtents(1.0, 0.5, 0.5);
   World world(weightless());
-  const BodyId boxId = world.addBody(box(halfExtents, Vec3::Zero(), boxMass));
+  BodyDefinition block = box(halfExtents, Vec3::Zero(), boxMass);
+  block.material.restitution = restitution;
+  const BodyId boxId = world.addBody(block);
   const BodyId ball = world.addBody(sphere(0.25, Vec3(offset, 1.5, 0), sphereMass, restitution));
   world.body(ball).setLinearVelocity(Vec3(0, -speed, 0));
   ASSERT_TRUE(stepUntilFirstResponse(world, 120));
@@ -353,7 +395,7 @@ TEST(WorldStep, RestingSphereStaysAtRestFor1000Steps) {
       ASSERT_EQ(position.x(), start.x());
       ASSERT_EQ(position.z(), start.z());
     }
-    const double allowed = settings.solver.seed.allowedPenetration;
+    const double allowed = settings.solver.linearSlop;
     EXPECT_LE(highest, start.y());
     EXPECT_GE(lowest, radius - allowed);
     EXPECT_LT(world.body(ball).linearVelocity().norm(), gravity * settings.dt);
@@ -373,7 +415,7 @@ TEST(WorldStep, RestingBoxStaysAtRestFor1000Steps) {
   const BodyId id = world.addBody(box(Vec3(0.5, 0.5, 0.5), start));
   for (int i = 0; i < 1000; ++i) {
     world.step();
-    ASSERT_LE((world.body(id).position() - start).norm(), world.settings().solver.seed.allowedPenetration);
+    ASSERT_LE((world.body(id).position() - start).norm(), world.settings().solver.linearSlop);
     // Gauss-Seidel visits the four corners in turn, which leaves a residual
     // spin of order 1e-5 rad/s; a rocking box (the seed's 0.74 rad/s) fails.
     ASSERT_LT(world.body(id).angularVelocity().norm(), 1e-3);
@@ -499,7 +541,7 @@ TEST(WorldStep, NonFiniteBodyTouchingAnotherIsFrozenBeforeItCanPoisonIt) {
   // Under the upper ball's weight the lower one sank to the allowed
   // penetration (plus at most one step of sinking, g dt^2); it stays there.
   EXPECT_LE(world.body(lower).position().y(), 0.5);
-  EXPECT_GE(world.body(lower).position().y(), 0.5 - settings.solver.seed.allowedPenetration - gravity * settings.dt * settings.dt);
+  EXPECT_GE(world.body(lower).position().y(), 0.5 - settings.solver.linearSlop - gravity * settings.dt * settings.dt);
 }
 
 // ---------------------------------------------------------------- sleeping
