@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "../render/visual_test_support.h"
+#include "tests/support/visual_test_support.h"
 #include "cli/arguments.h"
 #include "cli/limits.h"
 #include "cli/view_options.h"

@@ -9,7 +9,7 @@
 #include <string>
 #include <sys/wait.h>
 
-#include "../render/visual_test_support.h"
+#include "tests/support/visual_test_support.h"
 #include "render/image.h"
 
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "../render/visual_test_support.h"
+#include "tests/support/visual_test_support.h"
 #include "reports/child_process.h"
 
 namespace physdbg::clitesting {

@@ -7,7 +7,7 @@
 #include <random>
 #include <string>
 
-#include "../render/visual_test_support.h"
+#include "tests/support/visual_test_support.h"
 #include "scenes/scene.h"
 
 namespace {

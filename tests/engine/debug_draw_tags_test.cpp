@@ -15,7 +15,7 @@
 #include "engine/colliders/box_collider.h"
 #include "engine/world.h"
 #include "scenes/scene.h"
-#include "tests/engine/broad_phase_test_helpers.h"
+#include "tests/engine/broadphase/broad_phase_test_helpers.h"
 
 namespace physdbg {
 namespace {

@@ -4,7 +4,7 @@
 
 #include "debugdraw/ground_grid.h"
 #include "render/renderer.h"
-#include "render_test_support.h"
+#include "tests/support/render_test_support.h"
 #include "test_pictures.h"
 
 namespace {

@@ -7,7 +7,7 @@
 
 #include "render/frame_batches.h"
 #include "render/renderer.h"
-#include "render_test_support.h"
+#include "tests/support/render_test_support.h"
 #include "scenes/scene.h"
 
 namespace {

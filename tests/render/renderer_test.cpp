@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "render/renderer.h"
-#include "render_test_support.h"
+#include "tests/support/render_test_support.h"
 
 namespace physdbg::render {
 namespace {

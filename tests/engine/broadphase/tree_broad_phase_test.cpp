@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "engine/broadphase/brute_force_broad_phase.h"
-#include "tests/engine/broad_phase_test_helpers.h"
+#include "tests/engine/broadphase/broad_phase_test_helpers.h"
 
 namespace physdbg {
 namespace {

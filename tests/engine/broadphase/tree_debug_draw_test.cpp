@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/engine/broad_phase_test_helpers.h"
+#include "tests/engine/broadphase/broad_phase_test_helpers.h"
 
 namespace physdbg {
 namespace {

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "render/renderer.h"
-#include "render_test_support.h"
+#include "tests/support/render_test_support.h"
 #include "scenes/scene.h"
 
 namespace {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "render/image.h"
-#include "visual_test_support.h"
+#include "tests/support/visual_test_support.h"
 
 namespace {
 

@@ -2,7 +2,7 @@
 
 #include <numbers>
 
-#include "contact_test_helpers.h"
+#include "tests/engine/narrowphase/contact_test_helpers.h"
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/sphere_collider.h"

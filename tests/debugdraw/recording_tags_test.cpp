@@ -13,7 +13,7 @@
 
 #include "debugdraw/recording.h"
 #include "recording_test_support.h"
-#include "visual_test_support.h"
+#include "tests/support/visual_test_support.h"
 
 namespace {
 

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "render/image.h"
-#include "render_test_support.h"
-#include "visual_test_support.h"
+#include "tests/support/render_test_support.h"
+#include "tests/support/visual_test_support.h"
 
 namespace {
 

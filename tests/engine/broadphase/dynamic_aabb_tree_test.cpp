@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "tests/engine/broad_phase_test_helpers.h"
+#include "tests/engine/broadphase/broad_phase_test_helpers.h"
 
 namespace physdbg {
 namespace {

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "../render/visual_test_support.h"
+#include "tests/support/visual_test_support.h"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "render/renderer.h"
-#include "render_test_support.h"
+#include "tests/support/render_test_support.h"
 #include "viewer/pixel_canvas.h"
 #include "viewer/tree_diagram.h"
 #include "viewer/tree_snapshot.h"
