@@ -11,13 +11,8 @@
 
 namespace {
 
-using physdbg::cli::Arguments;
-using physdbg::cli::CommandSpec;
-using physdbg::cli::OptionGroup;
-using physdbg::cli::UsageError;
-using physdbg::visualtesting::Result;
-using physdbg::visualtesting::runPhysdbg;
-using physdbg::visualtesting::ScratchFolder;
+using namespace physdbg::cli;
+using namespace physdbg::visualtesting;
 
 // The groups as `render` and `replay` take them.
 const std::initializer_list<OptionGroup> renderGroups = {OptionGroup::SceneFrames, OptionGroup::ImageSize,
@@ -30,7 +25,7 @@ const std::initializer_list<OptionGroup> replayGroups = {OptionGroup::RecordedFr
 Arguments parse(const std::string& command, std::initializer_list<OptionGroup> groups,
                 const std::vector<std::string>& args) {
   CommandSpec spec{command, "", "", {}, 0, 0};
-  physdbg::cli::addOptions(spec, groups);
+  addOptions(spec, groups);
   return *Arguments::parse(spec, args);
 }
 
@@ -53,7 +48,6 @@ TEST(CommonOptions, ASharedOptionParsesIdenticallyInTwoCommands) {
                                          "--backend", "egl",     "--samples",    "4"};
   const Arguments render = parse("render", renderGroups, args);
   const Arguments replay = parse("replay", replayGroups, args);
-  using namespace physdbg::cli;
   EXPECT_EQ(readSize(render, defaultImageSize), std::make_pair(640, 360));
   EXPECT_EQ(readSize(replay, defaultImageSize), readSize(render, defaultImageSize));
   const FrameRange renderFrames = *readFrames(render), replayFrames = *readFrames(replay);
@@ -75,13 +69,13 @@ TEST(CommonOptions, ABadValueIsAUsageErrorNamingTheOptionAndTheValue) {
   for (const auto& groups : {renderGroups, replayGroups}) {
     const Arguments arguments = parse("render", groups, {"--size", "12", "--backend", "vulkan"});
     try {
-      physdbg::cli::readSize(arguments, physdbg::cli::defaultImageSize);
+      readSize(arguments, defaultImageSize);
       ADD_FAILURE() << "--size 12 was accepted";
     } catch (const UsageError& error) {
       EXPECT_NE(std::string(error.what()).find("--size"), std::string::npos) << error.what();
       EXPECT_NE(std::string(error.what()).find("'12'"), std::string::npos) << error.what();
     }
-    EXPECT_THROW(physdbg::cli::readBackend(arguments), UsageError);
+    EXPECT_THROW(readBackend(arguments), UsageError);
   }
 }
 
