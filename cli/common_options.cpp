@@ -26,7 +26,8 @@ OptionSpec framesOption(const std::string& help) { return {"--frames", "", "N|A:
 OptionSpec sizeOption(const std::string& help) { return {"--size", "", "WxH", help}; }
 OptionSpec layersOption(const std::string& help) { return {"--layers", "", "LIST", help}; }
 OptionSpec treeDepthOption(const std::string& help) {
-  return {"--tree-depth", "", "A:B", "draw only tree nodes of depth A..B (root 0; 'A:' for no upper limit" + help + ")"};
+  return {"--tree-depth", "", "A:B",
+          "draw only tree nodes of depth A..B (root 0; 'A:' for no upper limit" + help + ")"};
 }
 OptionSpec stepsOption(const std::string& help) { return {"--steps", "", "N", help}; }
 
@@ -54,23 +55,33 @@ std::vector<OptionSpec> cameraOptions() {
 
 std::vector<OptionSpec> optionRows(OptionGroup group) {
   switch (group) {
-    case OptionGroup::SceneFrames: return sceneFramesOptions();
-    case OptionGroup::RecordedFrames: return {framesOption("frames 0..N-1 or A..B-1 (default all)")};
-    case OptionGroup::ImageSize: return {sizeOption(std::string("image size in pixels (default ") + defaultImageSize + ")")};
-    case OptionGroup::PanelSize: return {sizeOption(std::string("size of each of the two panels (default ") + defaultPanelSize + ")")};
+    case OptionGroup::SceneFrames:
+      return sceneFramesOptions();
+    case OptionGroup::RecordedFrames:
+      return {framesOption("frames 0..N-1 or A..B-1 (default all)")};
+    case OptionGroup::ImageSize:
+      return {sizeOption(std::string("image size in pixels (default ") + defaultImageSize + ")")};
+    case OptionGroup::PanelSize:
+      return {sizeOption(std::string("size of each of the two panels (default ") + defaultPanelSize + ")")};
     case OptionGroup::SceneLayers:
       return {layersOption("comma list of debug layers: shapes, wire, aabbs, fat, tree, contacts, velocities, sleep, "
-                           "pairs, overlay (default: the scene's, else shapes,aabbs,overlay)"),
+                           "pairs, overlay (default: the scene's, else " +
+                           std::string(defaultLayers) + ")"),
               treeDepthOption("; needs the tree layer")};
     case OptionGroup::RecordedLayers:
       return {layersOption("debug layers to show, among those recorded (default: those the recording run showed)"),
               treeDepthOption("")};
-    case OptionGroup::Focus: return focusOptions();
-    case OptionGroup::Camera: return cameraOptions();
+    case OptionGroup::Focus:
+      return focusOptions();
+    case OptionGroup::Camera:
+      return cameraOptions();
     case OptionGroup::Backend:
-      return {{"--backend", "", "osmesa|egl", "GL context: OSMesa (default) or EGL without a surface (Mesa 25.1+, GPUs)"}};
-    case OptionGroup::RunSteps: return {stepsOption("number of steps (default: the scene's steps)")};
-    case OptionGroup::TreeSteps: return {stepsOption("then simulate N steps and show reinsertions that rotate")};
+      return {
+          {"--backend", "", "osmesa|egl", "GL context: OSMesa (default) or EGL without a surface (Mesa 25.1+, GPUs)"}};
+    case OptionGroup::RunSteps:
+      return {stepsOption("number of steps (default: the scene's steps)")};
+    case OptionGroup::TreeSteps:
+      return {stepsOption("then simulate N steps and show reinsertions that rotate")};
   }
   return {};
 }
@@ -125,7 +136,8 @@ void readTreeDepth(const Arguments& arguments, ViewOptions& options, const std::
   if (!options.layers.has(debugdraw::Layer::Tree))
     throw UsageError("--tree-depth: it limits the 'tree' layer, which is not among the layers (" +
                      debugdraw::layerNames(options.layers) + ", from " + layersFrom + "); add tree to --layers");
-  std::tie(options.treeMinDepth, options.treeMaxDepth) = parseDepthRange(arguments.value("--tree-depth"), "--tree-depth");
+  std::tie(options.treeMinDepth, options.treeMaxDepth) =
+      parseDepthRange(arguments.value("--tree-depth"), "--tree-depth");
 }
 
 CameraOptions readCameraOptions(const Arguments& arguments) {

@@ -41,6 +41,8 @@ enum class OptionGroup {
 // The --size defaults: a frame, and each of the tree's two panels.
 inline constexpr char defaultImageSize[] = "1280x720";
 inline constexpr char defaultPanelSize[] = "640x480";
+// The --layers of a scene run when neither the option nor the scene names any.
+inline constexpr char defaultLayers[] = "shapes,aabbs,overlay";
 
 // Appends the option rows of `groups`, in order, to spec.options.
 void addOptions(CommandSpec& spec, std::initializer_list<OptionGroup> groups);

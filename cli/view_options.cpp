@@ -12,9 +12,8 @@ FrameRange defaultFrames(const SceneDescription& scene, int stepsPerFrame) {
   const long long last = scene.steps / stepsPerFrame + 1;
   if (last > limits::maxFrames)
     throw UsageError("--frames: the scene's " + std::to_string(scene.steps) + " steps at " +
-                     std::to_string(stepsPerFrame) + " per frame make " + std::to_string(last) +
-                     " frames, more than " + std::to_string(limits::maxFrames) +
-                     "; choose a range with --frames or raise --steps-per-frame");
+                     std::to_string(stepsPerFrame) + " per frame make " + std::to_string(last) + " frames, more than " +
+                     std::to_string(limits::maxFrames) + "; choose a range with --frames or raise --steps-per-frame");
   return {0, static_cast<int>(last)};
 }
 
@@ -68,7 +67,7 @@ ViewOptions readViewOptions(const Arguments& arguments, const SceneDescription& 
   checkRunLength(options.frames, options.stepsPerFrame);
   options.runFrames = runFrameCount(options.frames, scene, options.stepsPerFrame);
   std::tie(options.width, options.height) = readSize(arguments, defaultImageSize);
-  options.layers = readLayers(arguments, scene.layers.value_or("shapes,aabbs,overlay"));
+  options.layers = readLayers(arguments, scene.layers.value_or(defaultLayers));
   readTreeDepth(arguments, options, layersSource(arguments, scene));
   readDrawChoices(arguments, options, &scene);
   options.timing = !arguments.has("--no-timing");

@@ -44,7 +44,7 @@ std::string helpLine(const std::string& command, const std::string& option) {
 }
 
 TEST(CommonOptions, ASharedOptionParsesIdenticallyInTwoCommands) {
-  const std::vector<std::string> args = {"--size", "640x360", "--frames=2:5", "--eye", "1,2,3",
+  const std::vector<std::string> args = {"--size",    "640x360", "--frames=2:5", "--eye", "1,2,3",
                                          "--backend", "egl",     "--samples",    "4"};
   const Arguments render = parse("render", renderGroups, args);
   const Arguments replay = parse("replay", replayGroups, args);
