@@ -5,8 +5,6 @@
 #include <iostream>
 #include <sstream>
 
-#include "cli/limits.h"
-
 namespace physdbg::cli {
 
 std::optional<Arguments> Arguments::parse(const CommandSpec& spec, const std::vector<std::string>& args) {
@@ -93,22 +91,6 @@ std::string helpText(const CommandSpec& spec) {
   help.resize(28, ' ');
   text << help << "show this help\n";
   return text.str();
-}
-
-std::pair<int, int> parseSize(const std::string& text, const std::string& option) {
-  const auto x = text.find('x');
-  int width = 0, height = 0;
-  const auto parsePart = [](const std::string& part, int& out) {
-    const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), out);
-    return error == std::errc() && end == part.data() + part.size() && !part.empty();
-  };
-  const auto inRange = [](int side) { return side >= limits::minImageSide && side <= limits::maxImageSide; };
-  if (x == std::string::npos || !parsePart(text.substr(0, x), width) || !parsePart(text.substr(x + 1), height) ||
-      !inRange(width) || !inRange(height) || static_cast<long long>(width) * height > limits::maxImagePixels)
-    throw UsageError(option + " must be WIDTHxHEIGHT with each side from " + std::to_string(limits::minImageSide) +
-                     " to " + std::to_string(limits::maxImageSide) + " and at most " +
-                     std::to_string(limits::maxImagePixels) + " pixels, got '" + text + "'");
-  return {width, height};
 }
 
 }  // namespace physdbg::cli

@@ -64,8 +64,4 @@ decltype(auto) asUsageError(Call&& call) {
   }
 }
 
-// "1280x720" -> {1280, 720}, each side and the pixel count within limits.h;
-// throws UsageError naming `option`.
-std::pair<int, int> parseSize(const std::string& text, const std::string& option);
-
 }  // namespace physdbg::cli

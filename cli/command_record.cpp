@@ -6,6 +6,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/common_options.h"
 #include "cli/numerical_faults.h"
 #include "cli/output_folder.h"
 #include "cli/progress_bar.h"
@@ -35,16 +36,15 @@ int runRecord(const std::vector<std::string>& args) {
       "of every frame to FILE (format: debugdraw/RECORDING.md). 'physdbg replay FILE' renders it later,\n"
       "showing --layers unless told otherwise, and can choose other layers, --highlight, --labels and the\n"
       "camera then. --size sets the aspect the camera frames for.",
-      {{"--output", "-o", "FILE", "recording to write (required)"}},
+      {outputOption("FILE", "recording to write (required)")},
       1,
       1};
-  for (const OptionSpec& option : recordViewOptionSpecs()) spec.options.push_back(option);
+  addOptions(spec, {OptionGroup::SceneFrames, OptionGroup::ImageSize, OptionGroup::SceneLayers, OptionGroup::Camera});
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
-  if (!parsed->has("--output")) throw UsageError("-o FILE is required");
+  const std::string path = requiredOutput(*parsed, "FILE");
   const SceneDescription scene = resolveScene(parsed->positional()[0]);
   const ViewOptions options = readViewOptions(*parsed, scene);
-  const std::string path = parsed->value("--output");
   createParentFolder(path);
   std::unique_ptr<debugdraw::RecordingWriter> writer;
   try {

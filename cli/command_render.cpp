@@ -10,6 +10,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/common_options.h"
 #include "cli/numerical_faults.h"
 #include "cli/output_folder.h"
 #include "cli/progress_bar.h"
@@ -95,12 +96,12 @@ int runRender(const std::vector<std::string>& args) {
       "are drawn (earlier ones are simulated), so several processes can render one run into one folder.\n"
       "Frame files of an earlier run are removed first: every frame_NNNNN.png in DIR, or with --frames A:B\n"
       "only frames A..B-1 (the other slices belong to the other processes).",
-      {{"--output", "-o", "DIR", "output folder (default out/SCENE)"},
+      {outputOption("DIR", "output folder (default out/SCENE)"),
        {"--video", "", "FILE.mp4", "also encode the frames into a video with ffmpeg"}},
       1,
       1};
-  for (const OptionSpec& option : viewOptionSpecs()) spec.options.push_back(option);
-  spec.options.push_back(backendOptionSpec());
+  addOptions(spec, {OptionGroup::SceneFrames, OptionGroup::ImageSize, OptionGroup::SceneLayers, OptionGroup::Focus,
+                    OptionGroup::Camera, OptionGroup::Backend});
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const SceneDescription scene = resolveScene(parsed->positional()[0]);

@@ -8,6 +8,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/common_options.h"
 #include "cli/output_folder.h"
 #include "cli/view_options.h"
 #include "debugdraw/recording.h"
@@ -57,14 +58,11 @@ struct ReplayView {
 ReplayView readReplayView(const Arguments& arguments) {
   ReplayView view;
   ViewOptions& options = view.options;
-  std::tie(options.width, options.height) = parseSize(arguments.value("--size", "1280x720"), "--size");
-  if (arguments.has("--layers")) view.layers = readLayerList(arguments.value("--layers"), "--layers");
+  std::tie(options.width, options.height) = readSize(arguments, defaultImageSize);
+  if (arguments.has("--layers")) view.layers = readLayers(arguments, "");
   options.layers = view.layers.value_or(viewer::allLayerSet());
   readTreeDepth(arguments, options, view.layers ? "--layers" : "the recording");
-  options.camera = readCameraOptions(arguments);
-  options.highlight = readHighlight(arguments);
-  options.labels = arguments.has("--labels");
-  options.samples = readSamples(arguments);
+  readDrawChoices(arguments, options);
   return view;
 }
 
@@ -144,24 +142,20 @@ int runReplay(const std::vector<std::string>& args) {
       "recorded. With --frames A:B only recorded frames A..B-1 are decoded and drawn. With no view option\n"
       "each frame is drawn as the recording run showed it; --layers, --tree-depth, --highlight, --labels and\n"
       "the camera options draw it as 'physdbg render' would have with them.",
-      {{"--output", "-o", "DIR", "output folder (required)"},
-       {"--frames", "", "N|A:B", "frames 0..N-1 or A..B-1 (default all)"},
-       {"--size", "", "WxH", "image size in pixels (default 1280x720)"}},
+      {outputOption("DIR", "output folder (required)")},
       1,
       1};
-  for (const OptionSpec& option : replayViewOptionSpecs()) spec.options.push_back(option);
-  spec.options.push_back(backendOptionSpec());
+  addOptions(spec, {OptionGroup::RecordedFrames, OptionGroup::ImageSize, OptionGroup::RecordedLayers,
+                    OptionGroup::Focus, OptionGroup::Camera, OptionGroup::Backend});
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
-  if (!parsed->has("--output")) throw UsageError("-o DIR is required");
-  FrameRange range{0, std::numeric_limits<int>::max()};
-  if (parsed->has("--frames")) range = parseFrameRange(parsed->value("--frames"), "--frames");
+  const std::string directory = requiredOutput(*parsed, "DIR");
+  const FrameRange range = readFrames(*parsed).value_or(FrameRange{0, std::numeric_limits<int>::max()});
   const ReplayView view = readReplayView(*parsed);
   const int width = view.options.width, height = view.options.height;
   debugdraw::RecordingReader reader(parsed->positional()[0]);
   checkTagged(reader, view, parsed->positional()[0]);
   ReplayViewer replayViewer(view, reader.version());
-  const std::string directory = parsed->value("--output");
   prepareOutputDirectory(directory);
 
   render::Renderer renderer({width, height, view.options.samples, readBackend(*parsed)});

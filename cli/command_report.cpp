@@ -9,6 +9,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/common_options.h"
 #include "cli/output_folder.h"
 #include "reports/accuracy_report.h"
 #include "reports/stability_report.h"
@@ -99,7 +100,7 @@ int runReport(const std::vector<std::string>& args) {
                          "fails).\naccuracy: analytic references swept over dt and solver settings: CSV, "
                          "work-precision plot, convergence orders, Markdown summary.\nstages: which pipeline stages "
                          "and debug layers each scene used, from the engine's counters.",
-                         {{"--output", "-o", "DIR", "also write the tables (and plots) to DIR"},
+                         {outputOption("DIR", "also write the tables (and plots) to DIR"),
                           {"--quick", "", "", "short runs (the CTest versions of the stability cases)"},
                           {"--case", "", "NAME", "stability: only the cases whose name contains NAME"}},
                          1,

@@ -8,7 +8,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
-#include "cli/limits.h"
+#include "cli/common_options.h"
 #include "cli/numerical_faults.h"
 #include "cli/output_folder.h"
 #include "cli/state_hash.h"
@@ -83,21 +83,21 @@ class EventPrinter final : public ContactListener {
 }  // namespace
 
 int runSimulate(const std::vector<std::string>& args) {
-  const CommandSpec spec{
+  CommandSpec spec{
       "simulate",
       "SCENE [--steps N] [--trace FILE.csv] [--hash] [--events]",
       "Runs SCENE (a built-in name or a scene file) without rendering and prints a summary.\n"
       "Exits with 1 when a body's state became NaN or Inf (the body is reported and frozen).",
-      {{"--steps", "", "N", "number of steps (default: the scene's steps)"},
-       {"--trace", "", "FILE.csv", "write every body's state at every step (step 0 = initial state)"},
+      {{"--trace", "", "FILE.csv", "write every body's state at every step (step 0 = initial state)"},
        {"--hash", "", "", "print a hash of all body states at the end (determinism checks)"},
        {"--events", "", "", "print contact events: 'step N begin|stay|end A B'"}},
       1,
       1};
+  addOptions(spec, {OptionGroup::RunSteps});
   const auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const SceneDescription scene = resolveScene(parsed->positional()[0]);
-  const int steps = parsed->positiveInt("--steps", scene.steps, static_cast<int>(limits::maxSteps));
+  const int steps = readSteps(*parsed, scene.steps);
   World world = buildWorld(scene);
   EventPrinter events(world);
   if (parsed->has("--events")) world.setContactListener(&events);

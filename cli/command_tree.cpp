@@ -10,9 +10,9 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/common_options.h"
 #include "cli/limits.h"
 #include "cli/output_folder.h"
-#include "cli/view_options.h"
 #include "render/renderer.h"
 #include "scenes/scene.h"
 #include "viewer/tree_view.h"
@@ -71,11 +71,10 @@ void checkPanelSize(const TreeViewSettings& settings, const std::string& text) {
 TreeViewSettings readSettings(const Arguments& arguments, const SceneDescription& scene) {
   TreeViewSettings settings;
   settings.outputDirectory = arguments.value("--output", sceneOutputFolder(scene.name, "tree_"));
-  const std::string size = arguments.value("--size", "640x480");
-  std::tie(settings.width, settings.height) = parseSize(size, "--size");
-  checkPanelSize(settings, size);
+  std::tie(settings.width, settings.height) = readSize(arguments, defaultPanelSize);
+  checkPanelSize(settings, arguments.value("--size", defaultPanelSize));
   settings.maxEvents = arguments.positiveInt("--max-events", 12, limits::maxTreeEvents);
-  settings.steps = arguments.positiveInt("--steps", 0, static_cast<int>(limits::maxSteps));
+  settings.steps = readSteps(arguments, 0);
   settings.margin = arguments.has("--margin") ? arguments.positiveDouble("--margin", 0.1) : 0.1;
   return settings;
 }
@@ -83,22 +82,20 @@ TreeViewSettings readSettings(const Arguments& arguments, const SceneDescription
 }  // namespace
 
 int runTree(const std::vector<std::string>& args) {
-  const CommandSpec spec{
+  CommandSpec spec{
       "tree",
-      "SCENE [-o DIR] [--size WxH] [--max-events N] [--steps K] [--margin M] [--backend osmesa|egl]",
+      "SCENE [-o DIR] [--size WxH] [--max-events N] [--steps N] [--margin M] [--backend osmesa|egl]",
       "Inserts SCENE's bodies one by one into a dynamic AABB tree and writes, for each insertion (and with\n"
       "--steps, each reinsertion) whose refit walk rotates, DIR/event_NNN_before.png and event_NNN_after.png:\n"
       "the 3D boxes beside the hierarchy diagram, with the swapped subtrees highlighted. 'Before' is the tree\n"
       "with the leaf inserted and refitted but not rotated. DIR/sar_height.png plots SAR and height against\n"
       "insertion count with and without rotations.",
-      {{"--output", "-o", "DIR", "output folder (default out/tree_SCENE)"},
-       {"--size", "", "WxH", "size of each of the two panels (default 640x480)"},
+      {outputOption("DIR", "output folder (default out/tree_SCENE)"),
        {"--max-events", "", "N", "write at most N frame pairs (default 12)"},
-       {"--steps", "", "K", "then simulate K steps and show reinsertions that rotate"},
-       {"--margin", "", "M", "fat-box margin of the tree (default 0.1)"},
-       backendOptionSpec()},
+       {"--margin", "", "M", "fat-box margin of the tree (default 0.1)"}},
       1,
       1};
+  addOptions(spec, {OptionGroup::PanelSize, OptionGroup::TreeSteps, OptionGroup::Backend});
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const SceneDescription scene = resolveScene(parsed->positional()[0]);
