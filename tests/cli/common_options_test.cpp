@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "../render/visual_test_support.h"
+#include "tests/support/visual_test_support.h"
 #include "cli/common_options.h"
 
 namespace {
