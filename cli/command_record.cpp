@@ -39,11 +39,12 @@ int runRecord(const std::vector<std::string>& args) {
       {outputOption("FILE", "recording to write (required)")},
       1,
       1};
-  addOptions(spec, {OptionGroup::SceneFrames, OptionGroup::ImageSize, OptionGroup::SceneLayers, OptionGroup::Camera});
+  addOptions(spec, {OptionGroup::SceneFrames, OptionGroup::ImageSize, OptionGroup::SceneLayers, OptionGroup::Camera,
+                    OptionGroup::Solver});
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const std::string path = requiredOutput(*parsed, "FILE");
-  const SceneDescription scene = resolveScene(parsed->positional()[0]);
+  const SceneDescription scene = readScene(*parsed);
   const ViewOptions options = readViewOptions(*parsed, scene);
   createParentFolder(path);
   std::unique_ptr<debugdraw::RecordingWriter> writer;

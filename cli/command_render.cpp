@@ -101,10 +101,10 @@ int runRender(const std::vector<std::string>& args) {
       1,
       1};
   addOptions(spec, {OptionGroup::SceneFrames, OptionGroup::ImageSize, OptionGroup::SceneLayers, OptionGroup::Focus,
-                    OptionGroup::Camera, OptionGroup::Backend});
+                    OptionGroup::Camera, OptionGroup::Backend, OptionGroup::Solver});
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
-  const SceneDescription scene = resolveScene(parsed->positional()[0]);
+  const SceneDescription scene = readScene(*parsed);
   const ViewOptions options = readViewOptions(*parsed, scene);
   const std::string outputDirectory = parsed->value("--output", sceneOutputFolder(scene.name));
   const std::string video = parsed->value("--video");

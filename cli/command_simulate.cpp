@@ -93,10 +93,10 @@ int runSimulate(const std::vector<std::string>& args) {
        {"--events", "", "", "print contact events: 'step N begin|stay|end A B'"}},
       1,
       1};
-  addOptions(spec, {OptionGroup::RunSteps});
+  addOptions(spec, {OptionGroup::RunSteps, OptionGroup::Solver});
   const auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
-  const SceneDescription scene = resolveScene(parsed->positional()[0]);
+  const SceneDescription scene = readScene(*parsed);
   const int steps = readSteps(*parsed, scene.steps);
   World world = buildWorld(scene);
   EventPrinter events(world);

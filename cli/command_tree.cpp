@@ -95,10 +95,10 @@ int runTree(const std::vector<std::string>& args) {
        {"--margin", "", "M", "fat-box margin of the tree (default 0.1)"}},
       1,
       1};
-  addOptions(spec, {OptionGroup::PanelSize, OptionGroup::TreeSteps, OptionGroup::Backend});
+  addOptions(spec, {OptionGroup::PanelSize, OptionGroup::TreeSteps, OptionGroup::Backend, OptionGroup::Solver});
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
-  const SceneDescription scene = resolveScene(parsed->positional()[0]);
+  const SceneDescription scene = readScene(*parsed);
   TreeViewSettings settings = readSettings(*parsed, scene);
   prepareOutputDirectory(settings.outputDirectory);
 

@@ -82,6 +82,9 @@ std::vector<OptionSpec> optionRows(OptionGroup group) {
       return {stepsOption("number of steps (default: the scene's steps)")};
     case OptionGroup::TreeSteps:
       return {stepsOption("then simulate N steps and show reinsertions that rotate")};
+    case OptionGroup::Solver:
+      return {{"--solver", "", "seed|sequential_impulse",
+               "contact solver, overriding the scene's: the design's one-point response, or sequential impulses"}};
   }
   return {};
 }
@@ -91,6 +94,16 @@ std::vector<OptionSpec> optionRows(OptionGroup group) {
 void addOptions(CommandSpec& spec, std::initializer_list<OptionGroup> groups) {
   for (const OptionGroup group : groups)
     for (OptionSpec& row : optionRows(group)) spec.options.push_back(std::move(row));
+}
+
+SceneDescription readScene(const Arguments& arguments) {
+  SceneDescription scene = resolveScene(arguments.positional()[0]);
+  if (!arguments.has("--solver")) return scene;
+  const std::string kind = arguments.value("--solver");
+  if (kind == "seed") scene.world.solver.kind = SolverKind::Seed;
+  else if (kind == "sequential_impulse") scene.world.solver.kind = SolverKind::SequentialImpulse;
+  else throw UsageError("--solver: expected seed or sequential_impulse, got '" + kind + "'");
+  return scene;
 }
 
 OptionSpec outputOption(const std::string& valueName, const std::string& help) {

@@ -13,6 +13,7 @@
 #include "cli/arguments.h"
 #include "debugdraw/primitives.h"
 #include "render/renderer.h"
+#include "scenes/scene.h"
 #include "viewer/view_options.h"
 
 namespace physdbg::cli {
@@ -36,6 +37,7 @@ enum class OptionGroup {
   Backend,         // --backend
   RunSteps,        // --steps (default the scene's steps)
   TreeSteps,       // --steps after the insertions (default none)
+  Solver,          // --solver seed|sequential_impulse (default the scene's)
 };
 
 // The --size defaults: a frame, and each of the tree's two panels.
@@ -69,6 +71,9 @@ debugdraw::LayerSet readLayers(const Arguments& arguments, const std::string& fa
 void readTreeDepth(const Arguments& arguments, ViewOptions& options, const std::string& layersFrom);
 // --follow, --eye, --target, --fov, --ortho (no scene to check --follow against).
 CameraOptions readCameraOptions(const Arguments& arguments);
+// The scene named by the first positional argument (a built-in name or a
+// file), with --solver, when given, overriding the scene's solver kind.
+SceneDescription readScene(const Arguments& arguments);
 // --highlight A,B,...: distinct body indices, at most limits::maxHighlighted.
 std::vector<int> readHighlight(const Arguments& arguments);
 // --samples N: 0 (off), 2, 4 or 8.

@@ -58,11 +58,25 @@ TEST(Cli, BadUsageExitsTwoWithAMessage) {
                         Case{"render default --frames -3", "--frames"}, Case{"render default --layers shapes,glow", "glow"},
                         Case{"simulate", "missing argument"}, Case{"simulate default --steps zero", "--steps"},
                         Case{"simulate no_such_scene", "no_such_scene"}, Case{"bench no_such_bench", "no_such_bench"},
-                        Case{"render default -o /dev/null/frames", "/dev/null/frames"}}) {
+                        Case{"render default -o /dev/null/frames", "/dev/null/frames"},
+                        Case{"simulate bounce --solver impulses", "--solver"}}) {
     const Result result = run(c.arguments);
     EXPECT_EQ(result.exitCode, 2) << c.arguments << "\n" << result.output;
     EXPECT_NE(result.output.find(c.mentions), std::string::npos) << c.arguments << "\n" << result.output;
   }
+}
+
+// --solver overrides the scene's solver: naming the scene's own changes
+// nothing, the other one changes the run.
+TEST(Cli, SolverOptionOverridesTheScenesSolver) {
+  const auto hashOf = [](const std::string& arguments) {
+    const Result result = run("simulate bounce --steps 120 --hash" + arguments);
+    EXPECT_EQ(result.exitCode, 0) << arguments << "\n" << result.output;
+    return result.output.substr(result.output.find("state hash"));
+  };
+  const std::string scenes = hashOf("");
+  EXPECT_EQ(hashOf(" --solver sequential_impulse"), scenes);
+  EXPECT_NE(hashOf(" --solver seed"), scenes);
 }
 
 TEST(Cli, BadSceneFilesExitTwoNamingFileAndKey) {
