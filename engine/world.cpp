@@ -46,6 +46,8 @@ BodyId World::addBody(const BodyDefinition& definition) {
   const RigidBody& body = bodies_.back();
   proxies_.push_back(broadPhase_->addProxy(body.collider().worldBounds(body.transform()), id,
                                            body.isStatic() ? ProxyMotion::Static : ProxyMotion::Dynamic));
+  // A still kinematic body never moves its proxy; one with a velocity does
+  // every step, like an awake dynamic body.
   frozen_.push_back(false);
   asleep_.push_back(false);
   slowTime_.push_back(0.0);
@@ -73,6 +75,7 @@ void World::step() {
   // its proxy made none): find them before solving, or it would fall a step.
   while (wakeTouchedBodies()) findContacts(context);
   solveContacts(context);  // responses, then positions
+  moveKinematicBodies(context);
   events_.update(solver_->eventContacts(contacts_), dormantPairs(), listener_);
   if (keepHistory_) history_.add(solver_->touchedPoints(contacts_));
   linkIslands();
@@ -104,9 +107,28 @@ void World::putToSleep(BodyId id) {
   broadPhase_->setProxyActive(proxies_[id], false);
 }
 
+bool World::isMoving(BodyId id) const {
+  const RigidBody& body = bodies_[id];
+  if (body.isStatic() || asleep_[id] || frozen_[id]) return false;
+  return !body.isKinematic() || body.linearVelocity() != Vec3::Zero() || body.angularVelocity() != Vec3::Zero();
+}
+
+void World::scheduleForce(const ScheduledForce& force) {
+  if (force.body >= bodies_.size()) throw std::invalid_argument("no body " + std::to_string(force.body));
+  if (!bodies_[force.body].isDynamic())
+    throw std::invalid_argument("body " + std::to_string(force.body) + " is static or kinematic: forces cannot move it");
+  if (force.isTorque && force.at) throw std::invalid_argument("a torque has no point of application");
+  if (!isFinite(force.vector) || (force.at && !isFinite(*force.at)))
+    throw std::invalid_argument("force vector and point must be finite");
+  if (!(0 <= force.firstStep && force.firstStep < force.endStep))
+    throw std::invalid_argument("force steps must be A < B with A >= 0");
+  scheduledForces_.push_back(force);
+}
+
 // Wakes come first: a pushed body wakes its whole island, bodies before it
 // in id order included, and each of them must then begin the step awake.
 void World::applyForces() {
+  applyScheduledForces();
   wakePushedBodies();
   for (BodyId id = 0; id < bodies_.size(); ++id) {
     RigidBody& body = bodies_[id];
@@ -118,6 +140,29 @@ void World::applyForces() {
     body.beginStep(settings_.gravity);
     ++stats_.awakeBodies;
     if (body.hasLocks()) ++stats_.lockedBodies;
+  }
+}
+
+// In the order they were scheduled, so sums are the same run after run.
+void World::applyScheduledForces() {
+  for (const ScheduledForce& force : scheduledForces_) {
+    if (stepCount_ < force.firstStep || stepCount_ >= force.endStep || frozen_[force.body]) continue;
+    RigidBody& body = bodies_[force.body];
+    if (force.isTorque) body.addTorque(force.vector, force.mode);
+    else if (force.at) body.addForceAtPoint(force.vector, *force.at, force.mode);
+    else body.addForce(force.vector, force.mode);
+  }
+}
+
+// A kinematic body moves with its velocities, after the solve: the solvers
+// saw it at the start of the step with these velocities (sequential impulses
+// also move it through its substeps, so gaps to it stay true).
+void World::moveKinematicBodies(const StepContext& context) {
+  for (BodyId id = 0; id < bodies_.size(); ++id) {
+    if (!bodies_[id].isKinematic() || !isMoving(id)) continue;
+    BodyMotion motion = bodies_[id].motion();
+    integratePosition(motion, context.dt);
+    bodies_[id].setMotion(motion);
   }
 }
 
@@ -133,7 +178,7 @@ void World::wakePushedBodies() {
 
 const std::vector<bool>& World::movableBodies() {
   movable_.resize(bodies_.size());
-  for (BodyId id = 0; id < bodies_.size(); ++id) movable_[id] = isMoving(id);
+  for (BodyId id = 0; id < bodies_.size(); ++id) movable_[id] = isPushable(id);
   return movable_;
 }
 
@@ -154,6 +199,7 @@ void World::findContacts(const StepContext& context) {
   const double touchingGap = solver_->touchingGap();
   for (const BodyPair& pair : pairs_) {
     const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
+    if (!a.isDynamic() && !b.isDynamic()) continue;  // a kinematic body passes through static ones
     // Fat boxes overlap long before the shapes can touch: when even the tight
     // boxes, grown by how far the pair can close this step, stay apart, the
     // narrow phase has nothing to say.
@@ -234,14 +280,14 @@ std::vector<BodyPair> World::dormantPairs() const {
 void World::linkIslands() {
   DisjointSets sets(bodies_.size());
   for (const Contact& contact : contacts_)
-    if (isMoving(contact.a) && isMoving(contact.b)) sets.unite(contact.a, contact.b);
+    if (isPushable(contact.a) && isPushable(contact.b)) sets.unite(contact.a, contact.b);
   for (BodyId id = 0; id < bodies_.size(); ++id)
-    if (isMoving(id)) island_[id] = sets.find(id);
+    if (isPushable(id)) island_[id] = sets.find(id);
 }
 
 void World::updateSlowTimes(const StepContext& context) {
   for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (!isMoving(id)) continue;
+    if (!isPushable(id)) continue;
     const RigidBody& body = bodies_[id];
     const bool slow = body.linearVelocity().norm() < settings_.sleepLinearSpeed &&
                       body.angularVelocity().norm() < settings_.sleepAngularSpeed;
@@ -258,10 +304,10 @@ bool World::updateSleep(const StepContext& context) {
   if (!settings_.allowSleep) return false;
   std::vector<double> islandSlowTime(bodies_.size(), std::numeric_limits<double>::infinity());
   for (BodyId id = 0; id < bodies_.size(); ++id)
-    if (isMoving(id)) islandSlowTime[island_[id]] = std::min(islandSlowTime[island_[id]], slowTime_[id]);
+    if (isPushable(id)) islandSlowTime[island_[id]] = std::min(islandSlowTime[island_[id]], slowTime_[id]);
   bool fellAsleep = false;
   for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (!isMoving(id) || islandSlowTime[island_[id]] < settings_.timeToSleep) continue;
+    if (!isPushable(id) || islandSlowTime[island_[id]] < settings_.timeToSleep) continue;
     putToSleep(id);
     fellAsleep = true;
   }

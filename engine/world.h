@@ -5,6 +5,7 @@
 // solvers is asked of the ContactSolver (solver/contact_solver.h).
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,19 @@ struct WorldSettings {
 
   SolverSettings solver;  // sequential impulses by default; solver.seed for the design's
   NarrowPhaseOptions narrowPhase;
+};
+
+// A force, torque, impulse or velocity change (its ForceMode) applied to one
+// dynamic body at every step s with firstStep <= s < endStep, before the step
+// integrates. A force through a world point `at` off the centre of mass also
+// turns the body (torque (at - centre) x force).
+struct ScheduledForce {
+  BodyId body = 0;
+  Vec3 vector = Vec3::Zero();  // N, m/s^2, N s or m/s (torques: N m, ...)
+  bool isTorque = false;
+  ForceMode mode = ForceMode::Force;
+  std::optional<Vec3> at;
+  int firstStep = 0, endStep = 1;
 };
 
 // A body whose state stopped being finite: reported once, then frozen.
@@ -93,6 +107,10 @@ class World {
   double time() const { return stepCount_ * settings_.dt; }
 
   void step();
+
+  // Throws std::invalid_argument for an unknown, static or kinematic body, a
+  // torque with a point, non-finite vectors or an empty step range.
+  void scheduleForce(const ScheduledForce& force);
 
   // Not owned; may be null. Receives begin/stay/end after each step.
   void setContactListener(ContactListener* listener) { listener_ = listener; }
@@ -146,7 +164,9 @@ class World {
 
  private:
   void applyForces();
+  void applyScheduledForces();
   void wakePushedBodies();
+  void moveKinematicBodies(const StepContext& context);
   const std::vector<bool>& movableBodies();
   void updateBroadPhase(const StepContext& context);
   void findContacts(const StepContext& context);
@@ -165,7 +185,12 @@ class World {
   void putToSleep(BodyId id);
   void wakeBody(BodyId id);  // this body only; wake() wakes its island
   std::vector<std::shared_ptr<const debugdraw::TriangleMesh>> hullMeshes() const;
-  bool isMoving(BodyId id) const { return !bodies_[id].isStatic() && !asleep_[id] && !frozen_[id]; }
+  // Moves this step: a dynamic body awake and finite, or a kinematic body
+  // with a velocity (a still one is as good as static).
+  bool isMoving(BodyId id) const;
+  // Moved by forces and contacts this step: a moving dynamic body. Only these
+  // are solved, link islands and fall asleep.
+  bool isPushable(BodyId id) const { return bodies_[id].isDynamic() && isMoving(id); }
 
   WorldSettings settings_;
   std::vector<RigidBody> bodies_;
@@ -183,6 +208,7 @@ class World {
   bool keepHistory_ = false;
   std::vector<ShownContact> resting_;  // sorted; what sleeping bodies rest on
   ContactListener* listener_ = nullptr;
+  std::vector<ScheduledForce> scheduledForces_;
   std::vector<NumericalFault> faults_;
   StepStats stats_;
   int stepCount_ = 0;

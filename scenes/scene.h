@@ -40,6 +40,7 @@ struct SceneDescription {
   WorldSettings world;
   int steps = 240;
   std::vector<BodyDefinition> bodies;
+  std::vector<ScheduledForce> forces;  // body indices are world body ids (after `repeat`)
   std::optional<SceneCamera> camera;
   std::optional<std::string> layers;  // the scene's default debug layers
 };

@@ -14,6 +14,7 @@ inline constexpr long long maxBodies = 100'000;  // after `repeat`; a touching p
 inline constexpr std::size_t maxBodyNameLength = 64;  // a body's "name": a label, not a document
 inline constexpr std::size_t maxHullPoints = 100'000;       // per convex shape
 inline constexpr long long maxSteps = 10'000'000;
+inline constexpr std::size_t maxForces = 10'000;  // "forces" entries: each is looked at every step
 inline constexpr int maxSubsteps = 1000;
 inline constexpr int maxIterations = 1000;
 inline constexpr long long maxSweepsPerStep = 10'000;  // max_substeps x iterations

@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/capsule_collider.h"
@@ -81,6 +84,12 @@ void readBodyKeys(const JsonReader& reader, const json& value, const std::string
     body.angularVelocity = reader.vec3(value["angular_velocity"], key("angular_velocity"));
   if (value.contains("mass")) body.mass = reader.size(value["mass"], key("mass"));
   if (value.contains("static")) body.isStatic = reader.boolean(value["static"], key("static"));
+  if (value.contains("kinematic")) {
+    body.isKinematic = reader.boolean(value["kinematic"], key("kinematic"));
+    if (body.isKinematic && body.isStatic) reader.fail(key("kinematic"), "a body cannot be both static and kinematic");
+    if (body.isKinematic && value.contains("mass"))
+      reader.fail(key("mass"), "a kinematic body has no mass: it moves with its velocities and pushes, unpushed");
+  }
   if (value.contains("restitution"))
     body.material.restitution = reader.inRange(value["restitution"], key("restitution"), 0.0, 1.0);
   if (value.contains("static_friction"))
@@ -152,7 +161,7 @@ void readBody(const JsonReader& reader, const json& value, std::size_t entry, Sc
   reader.checkKeys(value, path,
                    {"name", "shape", "position", "orientation", "velocity", "angular_velocity", "mass", "static",
                     "restitution", "static_friction", "dynamic_friction", "drag", "angular_drag", "use_gravity",
-                    "lock_translation", "lock_rotation", "repeat"});
+                    "lock_translation", "lock_rotation", "repeat", "kinematic"});
   BodyDefinition body;
   body.collider = readShape(reader, reader.required(value, path, "shape"), path + ".shape");
   readBodyKeys(reader, value, path, body);
@@ -169,16 +178,26 @@ int readCount(const JsonReader& reader, const json& value, const std::string& pa
   return static_cast<int>(reader.integer(value, path, 1, high));
 }
 
+// A string that must be one of `choices`; the message lists them all.
+template <typename Value>
+Value readChoice(const JsonReader& reader, const json& value, const std::string& path,
+                 std::initializer_list<std::pair<const char*, Value>> choices) {
+  const std::string text = reader.string(value, path);
+  std::string names;
+  for (const auto& choice : choices) {
+    if (text == choice.first) return choice.second;
+    names += (names.empty() ? "\"" : ", \"") + std::string(choice.first) + "\"";
+  }
+  reader.fail(path, "must be one of " + names + ", got \"" + excerpt(text) + "\"");
+}
+
 void readSolver(const JsonReader& reader, const json& value, const std::string& path, SolverSettings& solver) {
   reader.requireObject(value, path);
   reader.checkKeys(value, path,
                    {"kind", "iterations", "substeps", "max_substeps", "slop", "bounce_threshold", "position_correction"});
-  if (value.contains("kind")) {
-    const std::string kind = reader.string(value["kind"], path + ".kind");
-    if (kind == "seed") solver.kind = SolverKind::Seed;
-    else if (kind == "sequential_impulse") solver.kind = SolverKind::SequentialImpulse;
-    else reader.fail(path + ".kind", "must be \"seed\" or \"sequential_impulse\", got \"" + excerpt(kind) + "\"");
-  }
+  if (value.contains("kind"))
+    solver.kind = readChoice<SolverKind>(reader, value["kind"], path + ".kind",
+                                         {{"seed", SolverKind::Seed}, {"sequential_impulse", SolverKind::SequentialImpulse}});
   if (value.contains("slop")) solver.linearSlop = reader.inRange(value["slop"], path + ".slop", 0.0, 1.0);
   if (value.contains("bounce_threshold"))
     solver.restitutionThreshold = reader.inRange(value["bounce_threshold"], path + ".bounce_threshold", 0.0, 1e3);
@@ -220,14 +239,12 @@ SceneCamera readCamera(const JsonReader& reader, const json& value, const std::s
 }
 
 CombineRule readCombineRule(const JsonReader& reader, const json& value, const std::string& path) {
-  const std::string rule = reader.string(value, path);
-  if (rule == "average") return CombineRule::Average;
-  if (rule == "minimum") return CombineRule::Minimum;
-  if (rule == "maximum") return CombineRule::Maximum;
-  if (rule == "multiply") return CombineRule::Multiply;
-  if (rule == "geometric_mean") return CombineRule::GeometricMean;
-  reader.fail(path, "must be \"average\", \"minimum\", \"maximum\", \"multiply\" or \"geometric_mean\", got \"" +
-                        excerpt(rule) + "\"");
+  return readChoice<CombineRule>(reader, value, path,
+                                 {{"average", CombineRule::Average},
+                                  {"minimum", CombineRule::Minimum},
+                                  {"maximum", CombineRule::Maximum},
+                                  {"multiply", CombineRule::Multiply},
+                                  {"geometric_mean", CombineRule::GeometricMean}});
 }
 
 void readWorldKeys(const JsonReader& reader, const json& root, SceneDescription& scene) {
@@ -235,17 +252,64 @@ void readWorldKeys(const JsonReader& reader, const json& root, SceneDescription&
   if (root.contains("dt")) scene.world.dt = reader.inRange(root["dt"], "dt", limits::minDt, limits::maxDt);
   if (root.contains("steps")) scene.steps = static_cast<int>(reader.integer(root["steps"], "steps", 1, limits::maxSteps));
   if (root.contains("allow_sleep")) scene.world.allowSleep = reader.boolean(root["allow_sleep"], "allow_sleep");
-  if (root.contains("broadphase")) {
-    const std::string kind = reader.string(root["broadphase"], "broadphase");
-    if (kind == "tree") scene.world.broadPhase = BroadPhaseKind::Tree;
-    else if (kind == "brute_force") scene.world.broadPhase = BroadPhaseKind::BruteForce;
-    else reader.fail("broadphase", "must be \"tree\" or \"brute_force\", got \"" + excerpt(kind) + "\"");
-  }
+  if (root.contains("broadphase"))
+    scene.world.broadPhase = readChoice<BroadPhaseKind>(
+        reader, root["broadphase"], "broadphase",
+        {{"tree", BroadPhaseKind::Tree}, {"brute_force", BroadPhaseKind::BruteForce}});
   if (root.contains("solver")) readSolver(reader, root["solver"], "solver", scene.world.solver);
   if (root.contains("restitution_combine"))
     scene.world.solver.combine.restitution = readCombineRule(reader, root["restitution_combine"], "restitution_combine");
   if (root.contains("friction_combine"))
     scene.world.solver.combine.friction = readCombineRule(reader, root["friction_combine"], "friction_combine");
+}
+
+ForceMode readForceMode(const JsonReader& reader, const json& value, const std::string& path) {
+  return readChoice<ForceMode>(reader, value, path,
+                               {{"force", ForceMode::Force},
+                                {"acceleration", ForceMode::Acceleration},
+                                {"impulse", ForceMode::Impulse},
+                                {"velocity_change", ForceMode::VelocityChange}});
+}
+
+// {"body": I, "force" | "torque": [x,y,z], "mode", "at", "steps": [A, B]}:
+// the body must exist (after `repeat`) and be dynamic.
+ScheduledForce readForce(const JsonReader& reader, const json& value, const std::string& path,
+                         const SceneDescription& scene) {
+  reader.requireObject(value, path);
+  reader.checkKeys(value, path, {"body", "force", "torque", "mode", "at", "steps"});
+  ScheduledForce force;
+  const long long bodies = static_cast<long long>(scene.bodies.size());
+  if (bodies == 0) reader.fail(path + ".body", "the scene has no bodies");
+  force.body = static_cast<BodyId>(reader.integer(reader.required(value, path, "body"), path + ".body", 0, bodies - 1));
+  const BodyDefinition& body = scene.bodies[force.body];
+  if (body.isStatic || body.isKinematic)
+    reader.fail(path + ".body", "body " + std::to_string(force.body) + " is " +
+                                    (body.isStatic ? "static" : "kinematic") + ": forces cannot move it");
+  if (value.contains("force") == value.contains("torque")) reader.fail(path, "needs exactly one of force and torque");
+  force.isTorque = value.contains("torque");
+  const char* vectorKey = force.isTorque ? "torque" : "force";
+  force.vector = reader.vec3(value[vectorKey], path + "." + vectorKey);
+  if (value.contains("mode")) force.mode = readForceMode(reader, value["mode"], path + ".mode");
+  if (value.contains("at")) {
+    if (force.isTorque) reader.fail(path + ".at", "a torque has no point of application");
+    force.at = reader.vec3(value["at"], path + ".at");
+  }
+  if (value.contains("steps")) {
+    const json& steps = reader.array(value["steps"], path + ".steps", 2);
+    force.firstStep = static_cast<int>(reader.integer(steps[0], path + ".steps[0]", 0, limits::maxSteps - 1));
+    force.endStep = static_cast<int>(reader.integer(steps[1], path + ".steps[1]", force.firstStep + 1,
+                                                     limits::maxSteps));
+  }
+  return force;
+}
+
+void readForces(const JsonReader& reader, const json& value, SceneDescription& scene) {
+  const json& forces = reader.array(value, "forces", 0);
+  if (forces.size() > limits::maxForces)
+    reader.fail("forces", "has " + std::to_string(forces.size()) + " entries (at most " +
+                              std::to_string(limits::maxForces) + ")");
+  for (std::size_t i = 0; i < forces.size(); ++i)
+    scene.forces.push_back(readForce(reader, forces[i], "forces[" + std::to_string(i) + "]", scene));
 }
 
 }  // namespace
@@ -255,7 +319,8 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
   const json root = parseBoundedJson(jsonText, sourceName);
   reader.requireObject(root, "");
   reader.checkKeys(root, "", {"name", "description", "gravity", "dt", "steps", "bodies", "camera", "layers",
-                              "allow_sleep", "broadphase", "solver", "restitution_combine", "friction_combine"});
+                              "allow_sleep", "broadphase", "solver", "restitution_combine", "friction_combine",
+                              "forces"});
   SceneDescription scene;
   scene.source = sourceName;
   scene.name = std::filesystem::path(sourceName).stem().string();
@@ -273,6 +338,7 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
   }
   const json& bodies = reader.array(reader.required(root, "", "bodies"), "bodies", 0);
   for (std::size_t i = 0; i < bodies.size(); ++i) readBody(reader, bodies[i], i, scene);
+  if (root.contains("forces")) readForces(reader, root["forces"], scene);
   return scene;
 }
 
@@ -310,6 +376,13 @@ World buildWorld(const SceneDescription& scene) {
       if (i < scene.bodyEntries.size())
         where = "bodies[" + std::to_string(scene.bodyEntries[i]) + "] (body " + std::to_string(i) + ")";
       throw SceneError(source + ": " + where + ": " + error.what());
+    }
+  }
+  for (std::size_t i = 0; i < scene.forces.size(); ++i) {
+    try {
+      world->scheduleForce(scene.forces[i]);
+    } catch (const std::invalid_argument& error) {
+      throw SceneError(source + ": forces[" + std::to_string(i) + "]: " + error.what());
     }
   }
   return std::move(*world);

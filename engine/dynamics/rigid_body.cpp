@@ -69,6 +69,7 @@ RigidBody::RigidBody(const BodyDefinition& definition)
       angularVelocity_(definition.angularVelocity),
       orientation_(definition.orientation),
       isStatic_(definition.isStatic),
+      isKinematic_(definition.isKinematic),
       useGravity_(definition.useGravity),
       mass_(definition.mass),
       linearDrag_(definition.linearDrag),
@@ -83,13 +84,16 @@ RigidBody::RigidBody(const BodyDefinition& definition)
   if (orientation_.norm() < 1e-12) throw std::invalid_argument("body orientation is a zero quaternion");
   orientation_.normalize();
   if (linearDrag_ < 0 || angularDrag_ < 0) throw std::invalid_argument("drag must not be negative");
-  if (isStatic_) {
+  if (isStatic_ && isKinematic_) throw std::invalid_argument("a body cannot be both static and kinematic");
+  if (!isDynamic()) {  // infinite mass: nothing pushes it
     mass_ = 0.0;
     inverseMass_ = 0.0;
     localInertia_.setZero();
     localInverseInertia_.setZero();
-    linearVelocity_.setZero();
-    angularVelocity_.setZero();
+    if (isStatic_) {
+      linearVelocity_.setZero();
+      angularVelocity_.setZero();
+    }
     return;
   }
   if (!(mass_ > 0.0) || !std::isfinite(mass_)) throw std::invalid_argument("mass must be positive and finite");
@@ -111,7 +115,7 @@ Mat3 RigidBody::worldInverseInertia() const {
 
 
 void RigidBody::addForce(const Vec3& force, ForceMode mode) {
-  if (isStatic_) return;
+  if (!isDynamic()) return;
   switch (mode) {
     case ForceMode::Force: forceAccumulator_ += force; break;
     case ForceMode::Acceleration: accelerationAccumulator_ += force; break;
@@ -121,7 +125,7 @@ void RigidBody::addForce(const Vec3& force, ForceMode mode) {
 }
 
 void RigidBody::addTorque(const Vec3& torque, ForceMode mode) {
-  if (isStatic_) return;
+  if (!isDynamic()) return;
   switch (mode) {
     case ForceMode::Force: torqueAccumulator_ += torque; break;
     case ForceMode::Acceleration: angularAccelerationAccumulator_ += torque; break;
@@ -136,7 +140,7 @@ void RigidBody::addForceAtPoint(const Vec3& force, const Vec3& point, ForceMode 
 }
 
 void RigidBody::applyImpulseAtPoint(const Vec3& impulse, const Vec3& point) {
-  if (isStatic_) return;
+  if (!isDynamic()) return;
   linearVelocity_ += impulse * inverseMass_;
   angularVelocity_ += worldInverseInertia() * (point - position_).cross(impulse);
   applyLocks();
@@ -145,7 +149,7 @@ void RigidBody::applyImpulseAtPoint(const Vec3& impulse, const Vec3& point) {
 // Forces (and gravity) become this step's constant accelerations, so a step
 // cut into substeps applies them evenly; impulses act once, right away.
 void RigidBody::beginStep(const Vec3& gravity) {
-  if (isStatic_) return;
+  if (!isDynamic()) return;
   stepAcceleration_ = forceAccumulator_ * inverseMass_ + accelerationAccumulator_;
   if (useGravity_) stepAcceleration_ += gravity;
   const Mat3 inverseInertia = worldInverseInertia();
@@ -184,14 +188,14 @@ void RigidBody::setMotion(const BodyMotion& motion) {
 }
 
 void RigidBody::translate(const Vec3& delta) {
-  if (isStatic_) return;
+  if (!isDynamic()) return;
   for (int axis = 0; axis < 3; ++axis) {
     if (!lockTranslation_[axis]) position_[axis] += delta[axis];
   }
 }
 
 void RigidBody::rotate(const Vec3& rotation) {
-  if (isStatic_) return;
+  if (!isDynamic()) return;
   Vec3 allowed = rotation;
   for (int axis = 0; axis < 3; ++axis) {
     if (lockRotation_[axis]) allowed[axis] = 0.0;

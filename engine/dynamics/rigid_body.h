@@ -28,6 +28,9 @@ struct BodyDefinition {
   Vec3 angularVelocity = Vec3::Zero();  // world frame, rad/s
   double mass = 1.0;
   bool isStatic = false;
+  // Moved by its velocities alone: no gravity, forces or contacts change them,
+  // and it has infinite mass in contacts (it pushes, it is never pushed).
+  bool isKinematic = false;
   bool useGravity = true;
   double linearDrag = 0.0;   // 1/s: v / (1 + drag h) per integration of length h (motion.h)
   double angularDrag = 0.0;  // 1/s: same rule for the angular velocity
@@ -46,7 +49,7 @@ BodyDefinition aboutCentreOfMass(BodyDefinition definition);
 class RigidBody {
  public:
   // Throws std::invalid_argument for a missing collider, a non-positive mass
-  // on a dynamic body, or non-finite state.
+  // on a dynamic body, a body both static and kinematic, or non-finite state.
   explicit RigidBody(const BodyDefinition& definition);
 
   const Collider& collider() const { return *collider_; }
@@ -69,6 +72,9 @@ class RigidBody {
   void setAngularVelocity(const Vec3& velocity) { angularVelocity_ = velocity; }
 
   bool isStatic() const { return isStatic_; }
+  bool isKinematic() const { return isKinematic_; }
+  // Moved by forces and contacts: neither static nor kinematic.
+  bool isDynamic() const { return !isStatic_ && !isKinematic_; }
   bool usesGravity() const { return useGravity_; }
   double mass() const { return mass_; }
   double inverseMass() const { return inverseMass_; }
@@ -114,6 +120,7 @@ class RigidBody {
   Vec3 position_, linearVelocity_, angularVelocity_;
   Quat orientation_;
   bool isStatic_;
+  bool isKinematic_;
   bool useGravity_;
   double mass_, inverseMass_;
   Mat3 localInertia_, localInverseInertia_;

@@ -250,13 +250,15 @@ void SequentialImpulseSolver::integrateFreeBodies(std::vector<RigidBody>& bodies
 
 void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
                                           const ContactIsland& island, const SubstepContext& substeps) {
+  const std::vector<std::uint32_t> kinematic = kinematicNeighbours(bodies, manifolds, island);
   measureGaps(manifolds, island);
   for (int substep = 0; substep < substeps.count; ++substep) {
     integrateVelocities(island, substeps.h);
     if (settings_.warmStarting) warmStart(manifolds, island);
     for (int iteration = 0; iteration < settings_.velocityIterations; ++iteration)
       solve(manifolds, island, substeps, true, (substep + iteration) % 2 == 1);
-    integratePositions(island, substeps.h);
+    integratePositions(island.bodies, substeps.h);
+    integratePositions(kinematic, substeps.h);
     measureGaps(manifolds, island);
     solve(manifolds, island, substeps, false, substep % 2 == 0);
   }
@@ -399,8 +401,27 @@ void SequentialImpulseSolver::integrateVelocities(const ContactIsland& island, d
   for (std::uint32_t id : island.bodies) integrateVelocity(solverBodies_[id].motion, motionProperties_[id], h);
 }
 
-void SequentialImpulseSolver::integratePositions(const ContactIsland& island, double h) {
-  for (std::uint32_t id : island.bodies) {
+// Kinematic bodies move on their own through the step (World moves them after
+// the solve). An island sees those it touches move with its own substeps, from
+// their start-of-step pose, so gaps to them stay true; an island that touches
+// none pays nothing.
+std::vector<std::uint32_t> SequentialImpulseSolver::kinematicNeighbours(const std::vector<RigidBody>& bodies,
+                                                                         const std::vector<ContactManifold>& manifolds,
+                                                                         const ContactIsland& island) {
+  std::vector<std::uint32_t> kinematic;
+  for (std::uint32_t m : island.manifolds)
+    for (std::uint32_t id : {manifolds[m].a, manifolds[m].b})
+      if (bodies[id].isKinematic() && std::find(kinematic.begin(), kinematic.end(), id) == kinematic.end())
+        kinematic.push_back(id);
+  for (std::uint32_t id : kinematic) {
+    solverBodies_[id].motion = bodies[id].motion();
+    solverBodies_[id].rotation = bodies[id].orientation().toRotationMatrix();
+  }
+  return kinematic;
+}
+
+void SequentialImpulseSolver::integratePositions(const std::vector<std::uint32_t>& ids, double h) {
+  for (std::uint32_t id : ids) {
     SolverBody& body = solverBodies_[id];
     integratePosition(body.motion, h);
     body.rotation = body.motion.orientation.toRotationMatrix();

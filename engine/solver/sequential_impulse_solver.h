@@ -89,7 +89,10 @@ class SequentialImpulseSolver final : public ContactSolver {
   void prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                std::vector<ContactManifold>& manifolds);
   void integrateVelocities(const ContactIsland& island, double h);
-  void integratePositions(const ContactIsland& island, double h);
+  void integratePositions(const std::vector<std::uint32_t>& ids, double h);
+  std::vector<std::uint32_t> kinematicNeighbours(const std::vector<RigidBody>& bodies,
+                                                 const std::vector<ContactManifold>& manifolds,
+                                                 const ContactIsland& island);
   void measureGaps(const std::vector<ContactManifold>& manifolds, const ContactIsland& island);
   void warmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island);
   void prepareApproaches(const std::vector<ContactManifold>& manifolds);
