@@ -22,6 +22,8 @@ std::unique_ptr<BroadPhase> makeBroadPhase(const WorldSettings& settings) {
   }
   DynamicAabbTreeOptions options;
   options.margin = settings.fatMargin;
+  options.insertion = settings.treeInsertion;
+  options.rotations = settings.treeRotations;
   return std::make_unique<TreeBroadPhase>(options);
 }
 

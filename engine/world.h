@@ -11,6 +11,7 @@
 
 #include "debugdraw/primitives.h"
 #include "engine/broadphase/broad_phase.h"
+#include "engine/broadphase/tree_options.h"
 #include "engine/contacts/contact.h"
 #include "engine/contacts/contact_events.h"
 #include "engine/contacts/contact_history.h"
@@ -34,6 +35,10 @@ struct WorldSettings {
 
   BroadPhaseKind broadPhase = BroadPhaseKind::Tree;
   double fatMargin = 0.1;               // m added around each tight box
+  // The tree's insertion and rotations (dynamic_aabb_tree.h), so renders and
+  // benches can compare them on the same scene.
+  InsertionMethod treeInsertion = InsertionMethod::BranchAndBound;
+  bool treeRotations = true;
   bool bruteForceBothOrders = false;    // the design's baseline: test A-B and B-A
   // The design skips pairs of bodies that cannot move (static-static). Off
   // reproduces its slower baseline: those pairs go through the narrow phase too.

@@ -19,6 +19,7 @@ inline constexpr int maxSubsteps = 1000;
 inline constexpr int maxIterations = 1000;
 inline constexpr long long maxSweepsPerStep = 10'000;  // max_substeps x iterations
 inline constexpr double minDt = 1e-6, maxDt = 1.0;     // seconds
+inline constexpr double maxFatMargin = 1e3;             // m: past this every box overlaps every other
 // Every other number: finite, |x| <= maxMagnitude; sizes and masses >= minSize.
 inline constexpr double maxMagnitude = 1e9;
 inline constexpr double minSize = 1e-9;

@@ -247,15 +247,40 @@ CombineRule readCombineRule(const JsonReader& reader, const json& value, const s
                                   {"geometric_mean", CombineRule::GeometricMean}});
 }
 
+BroadPhaseKind readBroadPhaseKind(const JsonReader& reader, const json& value, const std::string& path) {
+  return readChoice<BroadPhaseKind>(reader, value, path,
+                                    {{"tree", BroadPhaseKind::Tree}, {"brute_force", BroadPhaseKind::BruteForce}});
+}
+
+// "tree" | "brute_force", or an object that also sets the tree's insertion
+// and rotations, the fat margin and static-pair skipping.
+void readBroadPhase(const JsonReader& reader, const json& value, const std::string& path, WorldSettings& world) {
+  if (!value.is_object()) {
+    world.broadPhase = readBroadPhaseKind(reader, value, path);
+    return;
+  }
+  reader.checkKeys(value, path, {"kind", "insertion", "rotations", "fat_margin", "skip_static_pairs"});
+  if (value.contains("kind")) world.broadPhase = readBroadPhaseKind(reader, value["kind"], path + ".kind");
+  const bool tree = world.broadPhase == BroadPhaseKind::Tree;
+  for (const char* key : {"insertion", "rotations"})
+    if (value.contains(key) && !tree) reader.fail(path + "." + key, "applies to the tree only (\"kind\": \"tree\")");
+  if (value.contains("insertion"))
+    world.treeInsertion = readChoice<InsertionMethod>(
+        reader, value["insertion"], path + ".insertion",
+        {{"branch_and_bound", InsertionMethod::BranchAndBound}, {"greedy", InsertionMethod::Greedy}});
+  if (value.contains("rotations")) world.treeRotations = reader.boolean(value["rotations"], path + ".rotations");
+  if (value.contains("fat_margin"))
+    world.fatMargin = reader.inRange(value["fat_margin"], path + ".fat_margin", 0.0, limits::maxFatMargin);
+  if (value.contains("skip_static_pairs"))
+    world.skipStaticPairs = reader.boolean(value["skip_static_pairs"], path + ".skip_static_pairs");
+}
+
 void readWorldKeys(const JsonReader& reader, const json& root, SceneDescription& scene) {
   if (root.contains("gravity")) scene.world.gravity = reader.vec3(root["gravity"], "gravity");
   if (root.contains("dt")) scene.world.dt = reader.inRange(root["dt"], "dt", limits::minDt, limits::maxDt);
   if (root.contains("steps")) scene.steps = static_cast<int>(reader.integer(root["steps"], "steps", 1, limits::maxSteps));
   if (root.contains("allow_sleep")) scene.world.allowSleep = reader.boolean(root["allow_sleep"], "allow_sleep");
-  if (root.contains("broadphase"))
-    scene.world.broadPhase = readChoice<BroadPhaseKind>(
-        reader, root["broadphase"], "broadphase",
-        {{"tree", BroadPhaseKind::Tree}, {"brute_force", BroadPhaseKind::BruteForce}});
+  if (root.contains("broadphase")) readBroadPhase(reader, root["broadphase"], "broadphase", scene.world);
   if (root.contains("solver")) readSolver(reader, root["solver"], "solver", scene.world.solver);
   if (root.contains("restitution_combine"))
     scene.world.solver.combine.restitution = readCombineRule(reader, root["restitution_combine"], "restitution_combine");

@@ -11,17 +11,10 @@
 #include <vector>
 
 #include "engine/aabb.h"
+#include "engine/broadphase/tree_options.h"
 
 namespace physdbg {
 
-enum class InsertionMethod { BranchAndBound, Greedy };
-
-struct DynamicAabbTreeOptions {
-  double margin = 0.1;                // fat box = tight box + margin on every side
-  double velocityPrediction = 0.0;    // fat box also extends by this factor times the displacement
-  InsertionMethod insertion = InsertionMethod::BranchAndBound;
-  bool rotations = true;
-};
 
 // One rotation applied during a refit walk: subtree `first` moved down and
 // `second` moved up, below `node`. Only recorded while the log is enabled,

@@ -6,6 +6,7 @@
 
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/sphere_collider.h"
+#include "engine/broadphase/dynamic_aabb_tree.h"
 #include "scenes/scene.h"
 
 namespace physdbg {
@@ -136,6 +137,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"bad lock", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "lock_rotation": [true]}]})",
                  "lock_rotation"},
         BadScene{"unknown layer", R"({"layers": "shapes,glitter", "bodies": []})", "glitter"},
+        BadScene{"tree option on brute force",
+                 R"({"broadphase": {"kind": "brute_force", "rotations": false}, "bodies": []})",
+                 "broadphase.rotations"},
+        BadScene{"unknown insertion", R"({"broadphase": {"insertion": "random"}, "bodies": []})",
+                 "broadphase.insertion"},
+        BadScene{"negative fat margin", R"({"broadphase": {"fat_margin": -1}, "bodies": []})", "broadphase.fat_margin"},
+        BadScene{"unknown broad-phase key", R"({"broadphase": {"kind": "tree", "depth": 3}, "bodies": []})", "depth"},
         BadScene{"unknown combine rule", R"({"restitution_combine": "median", "bodies": []})",
                  "restitution_combine"},
         BadScene{"negative slop", R"({"solver": {"slop": -0.1}, "bodies": []})", "solver.slop"},
@@ -230,6 +238,28 @@ TEST(SceneLoader, CapsuleConvexAndWorldKeys) {
   // The tetrahedron's centroid (0.5, 0.5, 0.5) becomes the body's position.
   EXPECT_TRUE(scene.bodies[1].position.isApprox(Vec3(10.5, 0.5, 0.5), 1e-12));
   EXPECT_TRUE(scene.bodies[1].collider->localSupport(Vec3(1, 0, 0)).isApprox(Vec3(1.5, -0.5, -0.5), 1e-12));
+}
+
+// The broad phase as an object: each switch reaches the world and its tree.
+TEST(SceneLoader, BroadPhaseSwitches) {
+  const SceneDescription scene = parseScene(
+      R"({"broadphase": {"kind": "tree", "insertion": "greedy", "rotations": false, "fat_margin": 0.3,
+                         "skip_static_pairs": false},
+          "bodies": [{"shape": {"sphere": {"radius": 1}}}]})",
+      "b.json");
+  EXPECT_EQ(scene.world.treeInsertion, InsertionMethod::Greedy);
+  EXPECT_FALSE(scene.world.treeRotations);
+  EXPECT_EQ(scene.world.fatMargin, 0.3);
+  EXPECT_FALSE(scene.world.skipStaticPairs);
+  const World world = buildWorld(scene);
+  ASSERT_NE(world.tree(), nullptr);
+  EXPECT_EQ(world.tree()->options().insertion, InsertionMethod::Greedy);
+  EXPECT_FALSE(world.tree()->options().rotations);
+  EXPECT_EQ(world.tree()->options().margin, 0.3);
+  const SceneDescription brute =
+      parseScene(R"({"broadphase": {"kind": "brute_force", "fat_margin": 0}, "bodies": []})", "b.json");
+  EXPECT_EQ(brute.world.broadPhase, BroadPhaseKind::BruteForce);
+  EXPECT_EQ(brute.world.fatMargin, 0.0);
 }
 
 TEST(SceneLoader, RejectsBadCapsulesHullsAndWorldKeys) {
