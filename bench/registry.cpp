@@ -16,7 +16,7 @@ std::vector<Benchmark> allBenchmarks() {
   std::vector<Benchmark> benchmarks;
   benchmarks.push_back({"tree", "broad-phase tree quality and speed against Bullet's btDbvt", runTreeBenchmark});
   benchmarks.push_back(narrowBenchmark());
-  benchmarks.push_back({"seed", "step time of the design's scenes: tree against brute force, 24 against 48 balls",
+  benchmarks.push_back({"seed", "the design's experiment: its scenes with its response and ours, against its figures",
                         runSeedBenchmark});
 #ifdef PHYSDBG_HAVE_RENDER
   benchmarks.push_back(renderBenchmark());

@@ -213,6 +213,10 @@ void World::findContacts(const StepContext& context) {
     const Contact contact{pair.a, pair.b,
                           collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase)};
     stats_.narrowPhase.add(contact.result);
+    // The design's brute force ran the narrow phase for B-A too; it responded
+    // once per pair, so that second answer is counted and dropped.
+    if (settings_.bruteForceBothOrders)
+      stats_.narrowPhase.add(collide(b.collider(), b.transform(), a.collider(), a.transform(), settings_.narrowPhase));
     stats_.manifoldPoints += solver_->addCandidate(contact, a, b, reach);
     if (contact.result.status == ContactStatus::Separated && contact.result.distance > touchingGap) continue;
     contacts_.push_back(contact);

@@ -7,6 +7,7 @@
 
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/sphere_collider.h"
+#include "engine/solver/solver_settings.h"
 #include "scenes/body_builders.h"
 
 namespace physdbg {
@@ -52,6 +53,7 @@ SceneDescription ballsScene(const std::string& name, const std::string& descript
   scene.world.bruteForceBothOrders = broadPhase == BroadPhaseKind::BruteForce;  // the design's A-B and B-A
   scene.world.skipStaticPairs = skipStaticPairs;
   scene.world.allowSleep = false;  // the design had no sleeping: every step does the full work
+  scene.world.solver.kind = SolverKind::Seed;  // the design's response, not our sequential impulses
   addEnclosure(scene);
   for (int i = 0; i < count; ++i) scene.bodies.push_back(ball(i));
   SceneCamera camera;
@@ -63,12 +65,14 @@ SceneDescription ballsScene(const std::string& name, const std::string& descript
 }
 
 // Four spheres side by side, restitution 0, 0.5, 0.8 and 1, dropped from
-// 4 m onto a floor of restitution 0 (the pair takes the larger value).
+// 4 m onto a floor of restitution 0 (the design's response averages the
+// pair's values).
 SceneDescription bounceScene(const std::string& description) {
   SceneDescription scene;
   scene.name = "bounce";
   scene.description = description;
   scene.steps = 300;
+  scene.world.solver.kind = SolverKind::Seed;  // the design's response
   scene.bodies.push_back(staticBox(Vec3(0, -0.5, 0), Vec3(4, 0.5, 2)));
   const double restitutions[] = {0.0, 0.5, 0.8, 1.0};
   for (int i = 0; i < 4; ++i) {
@@ -93,17 +97,18 @@ BuiltinScene ballsEntry(const std::string& name, const std::string& description,
 }  // namespace
 
 std::vector<BuiltinScene> designScenes() {
-  const std::string bounceDescription = "spheres of restitution 0, 0.5, 0.8, 1 dropped side by side onto a floor";
+  const std::string bounceDescription =
+      "spheres of restitution 0, 0.5, 0.8, 1 dropped side by side onto a floor (design's seed response)";
   return {
-      ballsEntry("balls24", "24 balls bouncing in an enclosure with a floor, walls and a ramp (tree)", 24,
+      ballsEntry("balls24", "24 balls bouncing in an enclosure with a floor, walls and a ramp (tree, design's seed response)", 24,
                  BroadPhaseKind::Tree, true),
-      ballsEntry("balls48", "48 balls bouncing in an enclosure with a floor, walls and a ramp (tree)", 48,
+      ballsEntry("balls48", "48 balls bouncing in an enclosure with a floor, walls and a ramp (tree, design's seed response)", 48,
                  BroadPhaseKind::Tree, true),
-      ballsEntry("balls48_bruteforce", "balls48 with brute-force pairs, each tested as A-B and B-A", 48,
+      ballsEntry("balls48_bruteforce", "balls48 with brute-force pairs, each tested as A-B and B-A (seed response)", 48,
                  BroadPhaseKind::BruteForce, true),
-      ballsEntry("balls48_no_static_skip", "balls48 (tree) with static-static pairs tested too", 48,
+      ballsEntry("balls48_no_static_skip", "balls48 (tree) with static-static pairs tested too (seed response)", 48,
                  BroadPhaseKind::Tree, false),
-      ballsEntry("balls48_bruteforce_no_static_skip", "balls48_bruteforce with static-static pairs tested too", 48,
+      ballsEntry("balls48_bruteforce_no_static_skip", "balls48_bruteforce with static-static pairs tested too (seed response)", 48,
                  BroadPhaseKind::BruteForce, false),
       {"bounce", bounceDescription, [=] { return bounceScene(bounceDescription); }},
   };
