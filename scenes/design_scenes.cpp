@@ -98,7 +98,8 @@ BuiltinScene ballsEntry(const std::string& name, const std::string& description,
 
 std::vector<BuiltinScene> designScenes() {
   const std::string bounceDescription =
-      "spheres of restitution 0, 0.5, 0.8, 1 dropped side by side onto a floor (design's seed response)";
+      "spheres of restitution 0, 0.5, 0.8, 1 dropped side by side onto a floor of 0 (design's seed response: "
+      "restitutions average, so each bounces with e/2)";
   return {
       ballsEntry("balls24", "24 balls bouncing in an enclosure with a floor, walls and a ramp (tree, design's seed response)", 24,
                  BroadPhaseKind::Tree, true),

@@ -70,7 +70,7 @@ TEST(Cli, BadUsageExitsTwoWithAMessage) {
 // nothing, the other one changes the run.
 TEST(Cli, SolverOptionOverridesTheScenesSolver) {
   const auto hashOf = [](const std::string& arguments) {
-    const Result result = run("simulate bounce --steps 120 --hash" + arguments);
+    const Result result = run("simulate stack --steps 120 --hash" + arguments);
     EXPECT_EQ(result.exitCode, 0) << arguments << "\n" << result.output;
     return result.output.substr(result.output.find("state hash"));
   };
