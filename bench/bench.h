@@ -3,16 +3,25 @@
 // at least name, n, ours_ms, peer, peer_ms and ratio (ours / peer): absolute
 // times on shared machines are noise, the ratio measured in one run is not.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "engine/solver/solver_settings.h"
+
 namespace physdbg::bench {
 
 struct BenchOptions {
   bool quick = false;  // smaller sizes, for smoke tests
+  // physdbg's contact solver in the scene benchmarks, overriding each scene's
+  // (`physdbg bench --solver`); the seed bench then runs only this one.
+  std::optional<SolverKind> solver;
 };
+
+// "seed" or "sequential_impulse", as the scene files and --solver spell them.
+const char* solverName(SolverKind kind);
 
 using BenchSink = std::function<void(const nlohmann::json& result)>;
 

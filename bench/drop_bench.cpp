@@ -19,12 +19,13 @@ int countEscaped(const EngineRun& run, const DropScene& drop) {
   return escaped;
 }
 
-void runDrop(int count, DropShape shape, int steps, const BenchSink& sink) {
+void runDrop(int count, DropShape shape, int steps, const BenchOptions& options, const BenchSink& sink) {
   const DropScene drop = dropScene(count, shape);
-  const EngineRun ours = runOurs(drop.scene, steps);
+  const EngineRun ours = runOurs(drop.scene, steps, options);
   const EngineRun peer = runBullet(drop.scene, steps, false);
   nlohmann::json record = benchRecord(std::string("drop/") + (shape == DropShape::Sphere ? "spheres" : "boxes"), count,
                                       ours.msPerStep, peer.ran ? "bullet 3.24 btDbvt+SI(10)" : "", peer.msPerStep);
+  record["solver"] = solverName(options.solver.value_or(drop.scene.world.solver.kind));
   record["steps"] = steps;
   record["dt"] = drop.scene.world.dt;
   record["sleeping"] = false;
@@ -41,7 +42,7 @@ void runDropBenchmark(const BenchOptions& options, const BenchSink& sink) {
   const std::vector<int> counts = options.quick ? std::vector<int>{64} : std::vector<int>{1000, 4000, 16000};
   const int steps = options.quick ? 10 : 600;
   for (const int count : counts) {
-    for (const DropShape shape : {DropShape::Sphere, DropShape::Box}) runDrop(count, shape, steps, sink);
+    for (const DropShape shape : {DropShape::Sphere, DropShape::Box}) runDrop(count, shape, steps, options, sink);
   }
 }
 

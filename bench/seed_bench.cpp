@@ -68,9 +68,11 @@ struct SolverVariant {
   std::string name;
 };
 
-const std::vector<SolverVariant>& solverVariants() {
-  static const std::vector<SolverVariant> variants = {{SolverKind::Seed, "seed"},
-                                                      {SolverKind::SequentialImpulse, "sequential_impulse"}};
+// Both solvers, or the one --solver names.
+std::vector<SolverVariant> solverVariants(const BenchOptions& options) {
+  std::vector<SolverVariant> variants;
+  for (const SolverKind kind : {SolverKind::Seed, SolverKind::SequentialImpulse})
+    if (!options.solver || *options.solver == kind) variants.push_back({kind, solverName(kind)});
   return variants;
 }
 
@@ -275,7 +277,7 @@ void runSeedBenchmark(const BenchOptions& options, const BenchSink& sink) {
   std::map<std::string, StageSeconds> stages;
   for (int repeat = 0; repeat < repeats; ++repeat) {
     for (const BuiltinScene& entry : scenes) {
-      for (const SolverVariant& solver : solverVariants()) {
+      for (const SolverVariant& solver : solverVariants(options)) {
         const std::string name = rowName(entry.name, solver.name);
         const SceneDescription scene = withSolver(entry, solver.kind);
         const SceneTiming timing = timeScene(scene, steps);
@@ -296,7 +298,7 @@ void runSeedBenchmark(const BenchOptions& options, const BenchSink& sink) {
   }
   for (const BuiltinScene& entry : scenes) {
     const long long bodies = static_cast<long long>(entry.make().bodies.size());
-    for (const SolverVariant& solver : solverVariants()) {
+    for (const SolverVariant& solver : solverVariants(options)) {
       const std::string name = rowName(entry.name, solver.name);
       const SceneTiming& timing = timings.at(name);
       const std::optional<Reference> reference = referenceOf(entry.name);

@@ -17,7 +17,8 @@ double millisecondsPerStep(int steps, Step&& step) {
 
 }  // namespace
 
-EngineRun runOurs(const SceneDescription& scene, int steps) {
+EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options) {
+  if (options.solver) scene.world.solver.kind = *options.solver;
   World world = buildWorld(scene);
   EngineRun run;
   for (const RigidBody& body : world.bodies()) run.startPositions.push_back(body.position());

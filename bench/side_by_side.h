@@ -4,6 +4,7 @@
 // energy and final positions (in scene body order).
 #include <vector>
 
+#include "bench/bench.h"
 #include "scenes/scene.h"
 
 namespace physdbg::bench {
@@ -15,7 +16,8 @@ struct EngineRun {
   std::vector<Vec3> startPositions, finalPositions;
 };
 
-EngineRun runOurs(const SceneDescription& scene, int steps);
+// With options.solver, physdbg runs the scene under that solver.
+EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options);
 EngineRun runBullet(const SceneDescription& scene, int steps, bool allowSleep);
 
 // Largest distance a body moved between the start and the end.

@@ -6,6 +6,7 @@
 #include "bench/bench.h"
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/common_options.h"
 
 namespace physdbg::cli {
 namespace {
@@ -33,11 +34,13 @@ int runBench(const std::vector<std::string>& args) {
   std::string names;
   for (const auto& benchmark : bench::allBenchmarks()) names += "\n  " + benchmark.name + ": " + benchmark.description;
   const CommandSpec spec{"bench",
-                         "[NAME] [--json] [--quick]",
+                         "[NAME] [--json] [--quick] [--solver seed|sequential_impulse]",
                          "Runs the benchmark NAME, or all of them, each side by side with its peer engine in the same "
                          "run.\nratio = ours / peer: below 1 means physdbg is faster. Benchmarks:" + names,
                          {{"--json", "", "", "print one JSON object per line instead of a table"},
-                          {"--quick", "", "", "small sizes (a smoke test, not a measurement)"}},
+                          {"--quick", "", "", "small sizes (a smoke test, not a measurement)"},
+                          {"--solver", "", "seed|sequential_impulse",
+                           "physdbg's contact solver in the scene benchmarks (drop, pyramid; seed runs only it)"}},
                          0,
                          1};
   const auto parsed = Arguments::parse(spec, args);
@@ -53,6 +56,7 @@ int runBench(const std::vector<std::string>& args) {
                        {"ratio", "ratio"}});
   bench::BenchOptions options;
   options.quick = parsed->has("--quick");
+  options.solver = readSolverKind(*parsed);
   for (const auto& benchmark : selected) {
     benchmark.run(options, [&](const nlohmann::json& record) {
       if (json) {

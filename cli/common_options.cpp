@@ -96,13 +96,17 @@ void addOptions(CommandSpec& spec, std::initializer_list<OptionGroup> groups) {
     for (OptionSpec& row : optionRows(group)) spec.options.push_back(std::move(row));
 }
 
+std::optional<SolverKind> readSolverKind(const Arguments& arguments) {
+  if (!arguments.has("--solver")) return std::nullopt;
+  const std::string kind = arguments.value("--solver");
+  if (kind == "seed") return SolverKind::Seed;
+  if (kind == "sequential_impulse") return SolverKind::SequentialImpulse;
+  throw UsageError("--solver: expected seed or sequential_impulse, got '" + kind + "'");
+}
+
 SceneDescription readScene(const Arguments& arguments) {
   SceneDescription scene = resolveScene(arguments.positional()[0]);
-  if (!arguments.has("--solver")) return scene;
-  const std::string kind = arguments.value("--solver");
-  if (kind == "seed") scene.world.solver.kind = SolverKind::Seed;
-  else if (kind == "sequential_impulse") scene.world.solver.kind = SolverKind::SequentialImpulse;
-  else throw UsageError("--solver: expected seed or sequential_impulse, got '" + kind + "'");
+  if (const std::optional<SolverKind> kind = readSolverKind(arguments)) scene.world.solver.kind = *kind;
   return scene;
 }
 

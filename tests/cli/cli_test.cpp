@@ -59,7 +59,8 @@ TEST(Cli, BadUsageExitsTwoWithAMessage) {
                         Case{"simulate", "missing argument"}, Case{"simulate default --steps zero", "--steps"},
                         Case{"simulate no_such_scene", "no_such_scene"}, Case{"bench no_such_bench", "no_such_bench"},
                         Case{"render default -o /dev/null/frames", "/dev/null/frames"},
-                        Case{"simulate bounce --solver impulses", "--solver"}}) {
+                        Case{"simulate bounce --solver impulses", "--solver"},
+                        Case{"bench pyramid --quick --solver impulses", "--solver"}}) {
     const Result result = run(c.arguments);
     EXPECT_EQ(result.exitCode, 2) << c.arguments << "\n" << result.output;
     EXPECT_NE(result.output.find(c.mentions), std::string::npos) << c.arguments << "\n" << result.output;
