@@ -22,6 +22,4 @@ nlohmann::json benchRecord(const std::string& name, long long n, double oursMs, 
   return record;
 }
 
-const char* solverName(SolverKind kind) { return kind == SolverKind::Seed ? "seed" : "sequential_impulse"; }
-
 }  // namespace physdbg::bench

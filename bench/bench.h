@@ -20,8 +20,6 @@ struct BenchOptions {
   std::optional<SolverKind> solver;
 };
 
-// "seed" or "sequential_impulse", as the scene files and --solver spell them.
-const char* solverName(SolverKind kind);
 
 using BenchSink = std::function<void(const nlohmann::json& result)>;
 

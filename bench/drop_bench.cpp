@@ -25,7 +25,7 @@ void runDrop(int count, DropShape shape, int steps, const BenchOptions& options,
   const EngineRun peer = runBullet(drop.scene, steps, false);
   nlohmann::json record = benchRecord(std::string("drop/") + (shape == DropShape::Sphere ? "spheres" : "boxes"), count,
                                       ours.msPerStep, peer.ran ? "bullet 3.24 btDbvt+SI(10)" : "", peer.msPerStep);
-  record["solver"] = solverName(options.solver.value_or(drop.scene.world.solver.kind));
+  record["solver"] = solverKindName(options.solver.value_or(drop.scene.world.solver.kind));
   record["steps"] = steps;
   record["dt"] = drop.scene.world.dt;
   record["sleeping"] = false;

@@ -18,7 +18,7 @@ void runPyramidBenchmark(const BenchOptions& options, const BenchSink& sink) {
   const EngineRun peer = runBullet(scene, steps, scene.world.allowSleep);
   nlohmann::json record = benchRecord("pyramid/base" + std::to_string(base), base * (base + 1) / 2, ours.msPerStep,
                                       peer.ran ? "bullet 3.24 btDbvt+SI(10)" : "", peer.msPerStep);
-  record["solver"] = solverName(options.solver.value_or(scene.world.solver.kind));
+  record["solver"] = solverKindName(options.solver.value_or(scene.world.solver.kind));
   record["steps"] = steps;
   record["sleeping"] = scene.world.allowSleep;
   record["ours_largest_displacement"] = largestDisplacement(ours);

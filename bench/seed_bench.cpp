@@ -72,7 +72,7 @@ struct SolverVariant {
 std::vector<SolverVariant> solverVariants(const BenchOptions& options) {
   std::vector<SolverVariant> variants;
   for (const SolverKind kind : {SolverKind::Seed, SolverKind::SequentialImpulse})
-    if (!options.solver || *options.solver == kind) variants.push_back({kind, solverName(kind)});
+    if (!options.solver || *options.solver == kind) variants.push_back({kind, solverKindName(kind)});
   return variants;
 }
 

@@ -98,10 +98,10 @@ void addOptions(CommandSpec& spec, std::initializer_list<OptionGroup> groups) {
 
 std::optional<SolverKind> readSolverKind(const Arguments& arguments) {
   if (!arguments.has("--solver")) return std::nullopt;
-  const std::string kind = arguments.value("--solver");
-  if (kind == "seed") return SolverKind::Seed;
-  if (kind == "sequential_impulse") return SolverKind::SequentialImpulse;
-  throw UsageError("--solver: expected seed or sequential_impulse, got '" + kind + "'");
+  const std::string name = arguments.value("--solver");
+  for (const SolverKind kind : {SolverKind::Seed, SolverKind::SequentialImpulse})
+    if (name == solverKindName(kind)) return kind;
+  throw UsageError("--solver: expected seed or sequential_impulse, got '" + name + "'");
 }
 
 SceneDescription readScene(const Arguments& arguments) {

@@ -197,7 +197,8 @@ void readSolver(const JsonReader& reader, const json& value, const std::string& 
                    {"kind", "iterations", "substeps", "max_substeps", "slop", "bounce_threshold", "position_correction"});
   if (value.contains("kind"))
     solver.kind = readChoice<SolverKind>(reader, value["kind"], path + ".kind",
-                                         {{"seed", SolverKind::Seed}, {"sequential_impulse", SolverKind::SequentialImpulse}});
+                                         {{solverKindName(SolverKind::Seed), SolverKind::Seed},
+                                          {solverKindName(SolverKind::SequentialImpulse), SolverKind::SequentialImpulse}});
   if (value.contains("slop")) solver.linearSlop = reader.inRange(value["slop"], path + ".slop", 0.0, 1.0);
   if (value.contains("bounce_threshold"))
     solver.restitutionThreshold = reader.inRange(value["bounce_threshold"], path + ".bounce_threshold", 0.0, 1e3);

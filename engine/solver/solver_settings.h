@@ -9,6 +9,12 @@ enum class SolverKind {
   SequentialImpulse,  // manifolds, friction, soft contacts, substeps (sequential_impulse_solver.h)
 };
 
+// "seed" or "sequential_impulse": how scene files, --solver and bench
+// records spell a kind.
+inline const char* solverKindName(SolverKind kind) {
+  return kind == SolverKind::Seed ? "seed" : "sequential_impulse";
+}
+
 // The seed solver's own parameter: the design's response, one contact at a time.
 struct SeedSolverSettings {
   // Share of the penetration (beyond linearSlop) removed per step: the
