@@ -34,6 +34,7 @@ class TraceWriter {
     errno = 0;
     char line[512];
     for (std::size_t i = 0; i < world.bodyCount(); ++i) {
+      if (!world.isPresent(static_cast<BodyId>(i))) continue;  // added later in the run, or removed
       const RigidBody& body = world.body(static_cast<BodyId>(i));
       const Vec3& p = body.position();
       const Quat& q = body.orientation();
@@ -118,7 +119,7 @@ int runSimulate(const std::vector<std::string>& args) {
 
   double kineticEnergy = 0;
   for (std::size_t i = 0; i < world.bodyCount(); ++i) {
-    if (!world.isFrozen(static_cast<BodyId>(i))) kineticEnergy += world.body(static_cast<BodyId>(i)).kineticEnergy();
+    if (!world.isFrozen(static_cast<BodyId>(i)) && world.isPresent(static_cast<BodyId>(i))) kineticEnergy += world.body(static_cast<BodyId>(i)).kineticEnergy();
   }
   std::printf("scene %s: %zu bodies, %d steps of %.6g s (%.4g s simulated)\n", scene.name.c_str(), world.bodyCount(),
               steps, scene.world.dt, world.time());

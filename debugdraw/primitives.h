@@ -216,6 +216,7 @@ struct BodyInfo {
   std::int32_t treeLeaf = -1;  // its broad-phase tree leaf, and that leaf's parent (-1: none)
   std::int32_t treeParent = -1;
   bool isStatic = false, asleep = false;
+  bool absent = false;  // not in the run at this frame (added later or removed): nothing drawn
 };
 
 struct Frame {

@@ -52,6 +52,7 @@ BodyId World::addBody(const BodyDefinition& definition) {
   // every step, like an awake dynamic body.
   frozen_.push_back(false);
   asleep_.push_back(false);
+  present_.push_back(true);
   slowTime_.push_back(0.0);
   island_.push_back(id);
   return id;
@@ -83,6 +84,7 @@ void World::step() {
   linkIslands();
   keepRestingContacts(updateSleep(context));
   freezeNonFiniteBodies();
+  applyLifetimes(stepCount_ + 1);  // the state this step ends in has the bodies it should
   ++stepCount_;
 }
 
@@ -111,7 +113,7 @@ void World::putToSleep(BodyId id) {
 
 bool World::isMoving(BodyId id) const {
   const RigidBody& body = bodies_[id];
-  if (body.isStatic() || asleep_[id] || frozen_[id]) return false;
+  if (body.isStatic() || asleep_[id] || !takesPart(id)) return false;
   return !body.isKinematic() || body.linearVelocity() != Vec3::Zero() || body.angularVelocity() != Vec3::Zero();
 }
 
@@ -134,7 +136,7 @@ void World::applyForces() {
   wakePushedBodies();
   for (BodyId id = 0; id < bodies_.size(); ++id) {
     RigidBody& body = bodies_[id];
-    if (frozen_[id] || body.isStatic()) continue;
+    if (!takesPart(id) || body.isStatic()) continue;
     if (asleep_[id]) {
       ++stats_.sleepingBodies;
       continue;
@@ -148,7 +150,7 @@ void World::applyForces() {
 // In the order they were scheduled, so sums are the same run after run.
 void World::applyScheduledForces() {
   for (const ScheduledForce& force : scheduledForces_) {
-    if (stepCount_ < force.firstStep || stepCount_ >= force.endStep || frozen_[force.body]) continue;
+    if (stepCount_ < force.firstStep || stepCount_ >= force.endStep || !takesPart(force.body)) continue;
     RigidBody& body = bodies_[force.body];
     if (force.isTorque) body.addTorque(force.vector, force.mode);
     else if (force.at) body.addForceAtPoint(force.vector, *force.at, force.mode);
@@ -231,10 +233,10 @@ void World::findContacts(const StepContext& context) {
 // narrow-phase test whose answer nobody uses.
 void World::testStaticPairs() {
   for (BodyId i = 0; i < bodies_.size(); ++i) {
-    if (!bodies_[i].isStatic()) continue;
+    if (!bodies_[i].isStatic() || !present_[i]) continue;
     const Aabb boxI = bodies_[i].collider().worldBounds(bodies_[i].transform());
     for (BodyId j = i + 1; j < bodies_.size(); ++j) {
-      if (!bodies_[j].isStatic()) continue;
+      if (!bodies_[j].isStatic() || !present_[j]) continue;
       ++stats_.staticPairsTested;
       if (!boxI.overlaps(bodies_[j].collider().worldBounds(bodies_[j].transform()))) continue;
       stats_.narrowPhase.add(collide(bodies_[i].collider(), bodies_[i].transform(), bodies_[j].collider(),
@@ -273,7 +275,7 @@ void World::solveContacts(const StepContext& context) {
 std::vector<BodyPair> World::dormantPairs() const {
   std::vector<BodyPair> dormant;
   for (const BodyPair& pair : events_.touchingPairs()) {
-    if (frozen_[pair.a] || frozen_[pair.b] || isMoving(pair.a) || isMoving(pair.b)) continue;
+    if (!takesPart(pair.a) || !takesPart(pair.b) || isMoving(pair.a) || isMoving(pair.b)) continue;
     if (asleep_[pair.a] || asleep_[pair.b]) dormant.push_back(pair);
   }
   return dormant;
@@ -318,6 +320,57 @@ bool World::updateSleep(const StepContext& context) {
     fellAsleep = true;
   }
   return fellAsleep;
+}
+
+void World::removeBody(BodyId id) {
+  if (id >= bodies_.size()) throw std::invalid_argument("no body " + std::to_string(id));
+  if (!present_[id]) return;
+  present_[id] = false;
+  asleep_[id] = false;
+  slowTime_[id] = 0.0;
+  island_[id] = id;
+  if (proxies_[id] >= 0) broadPhase_->removeProxy(proxies_[id]);
+  proxies_[id] = -1;
+  // What rested on it falls: its neighbours wake with their islands.
+  for (const BodyPair& pair : events_.touchingPairs())
+    if (pair.a == id || pair.b == id) wake(pair.a == id ? pair.b : pair.a);
+  events_.endPairsWith(id, listener_);
+  std::erase_if(resting_, [id](const ShownContact& point) { return point.pair.a == id || point.pair.b == id; });
+}
+
+void World::restoreBody(BodyId id) {
+  if (id >= bodies_.size()) throw std::invalid_argument("no body " + std::to_string(id));
+  if (present_[id]) return;
+  present_[id] = true;
+  if (frozen_[id]) return;  // a non-finite body stays out of the broad phase
+  const RigidBody& body = bodies_[id];
+  proxies_[id] = broadPhase_->addProxy(body.collider().worldBounds(body.transform()), id,
+                                       body.isStatic() ? ProxyMotion::Static : ProxyMotion::Dynamic);
+}
+
+void World::scheduleLifetime(const BodyLifetime& lifetime) {
+  const BodyId id = lifetime.body;
+  if (id >= bodies_.size()) throw std::invalid_argument("no body " + std::to_string(id));
+  for (const BodyLifetime& scheduled : lifetimes_)
+    if (scheduled.body == id) throw std::invalid_argument("body " + std::to_string(id) + " already has a lifetime");
+  if (lifetime.addAtStep < 0) throw std::invalid_argument("add step must not be negative");
+  if (lifetime.removeAtStep && *lifetime.removeAtStep <= lifetime.addAtStep)
+    throw std::invalid_argument("remove step must come after the add step");
+  if (lifetime.addAtStep < stepCount_ && lifetime.addAtStep > 0)
+    throw std::invalid_argument("add step " + std::to_string(lifetime.addAtStep) + " has passed");
+  if (lifetime.removeAtStep && *lifetime.removeAtStep <= stepCount_)
+    throw std::invalid_argument("remove step " + std::to_string(*lifetime.removeAtStep) + " has passed");
+  lifetimes_.push_back(lifetime);
+  if (lifetime.addAtStep > stepCount_) removeBody(id);
+}
+
+// Removals first, in the order scheduled, so a body leaving and one arriving
+// on the same step never meet.
+void World::applyLifetimes(int state) {
+  for (const BodyLifetime& lifetime : lifetimes_)
+    if (lifetime.removeAtStep == state) removeBody(lifetime.body);
+  for (const BodyLifetime& lifetime : lifetimes_)
+    if (lifetime.addAtStep == state) restoreBody(lifetime.body);
 }
 
 // A non-finite body is reported with the step it happened on, then frozen and

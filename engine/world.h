@@ -66,6 +66,15 @@ struct ScheduledForce {
   int firstStep = 0, endStep = 1;
 };
 
+// When a body takes part in the run: in the states s (the world after s
+// steps) with addAtStep <= s < removeAtStep. Ids never change, so a body
+// added later keeps the id (the scene index) it was created with.
+struct BodyLifetime {
+  BodyId body = 0;
+  int addAtStep = 0;
+  std::optional<int> removeAtStep;
+};
+
 // A body whose state stopped being finite: reported once, then frozen.
 struct NumericalFault {
   BodyId body = 0;
@@ -116,6 +125,19 @@ class World {
   // Throws std::invalid_argument for an unknown, static or kinematic body, a
   // torque with a point, non-finite vectors or an empty step range.
   void scheduleForce(const ScheduledForce& force);
+
+  // Takes the body out of the run, keeping its id and state: its proxy leaves
+  // the broad phase, its touching pairs end now (`end` events), the bodies
+  // it touched wake, and nothing moves, pushes or draws it until restoreBody.
+  void removeBody(BodyId id);
+  // Puts a removed body back, awake, where and as fast as it was.
+  void restoreBody(BodyId id);
+  bool isPresent(BodyId id) const { return present_.at(id); }
+  // Removes the body now if it comes later, and applies the lifetime's steps
+  // as the run reaches them. Throws std::invalid_argument for an unknown
+  // body, a second lifetime for it, a negative addAtStep, removeAtStep <=
+  // addAtStep or a step the run has passed.
+  void scheduleLifetime(const BodyLifetime& lifetime);
 
   // Not owned; may be null. Receives begin/stay/end after each step.
   void setContactListener(ContactListener* listener) { listener_ = listener; }
@@ -187,20 +209,23 @@ class World {
   void updateSlowTimes(const StepContext& context);
   bool updateSleep(const StepContext& context);  // true when an island fell asleep
   void freezeNonFiniteBodies();
+  void applyLifetimes(int state);  // add and remove what the lifetimes say for `state`
   void putToSleep(BodyId id);
   void wakeBody(BodyId id);  // this body only; wake() wakes its island
   std::vector<std::shared_ptr<const debugdraw::TriangleMesh>> hullMeshes() const;
   // Moves this step: a dynamic body awake and finite, or a kinematic body
   // with a velocity (a still one is as good as static).
   bool isMoving(BodyId id) const;
+  // Present and finite: the body is in the broad phase and can touch.
+  bool takesPart(BodyId id) const { return present_[id] && !frozen_[id]; }
   // Moved by forces and contacts this step: a moving dynamic body. Only these
   // are solved, link islands and fall asleep.
   bool isPushable(BodyId id) const { return bodies_[id].isDynamic() && isMoving(id); }
 
   WorldSettings settings_;
   std::vector<RigidBody> bodies_;
-  std::vector<int> proxies_;  // broad-phase proxy per body, -1 once frozen
-  std::vector<bool> frozen_, asleep_;
+  std::vector<int> proxies_;  // broad-phase proxy per body, -1 once frozen or removed
+  std::vector<bool> frozen_, asleep_, present_;
   std::vector<double> slowTime_;  // seconds spent below the sleep speeds
   std::vector<BodyId> island_;    // lowest id of the body's island (see islandOf)
   std::unique_ptr<BroadPhase> broadPhase_;
@@ -214,6 +239,7 @@ class World {
   std::vector<ShownContact> resting_;  // sorted; what sleeping bodies rest on
   ContactListener* listener_ = nullptr;
   std::vector<ScheduledForce> scheduledForces_;
+  std::vector<BodyLifetime> lifetimes_;
   std::vector<NumericalFault> faults_;
   StepStats stats_;
   int stepCount_ = 0;

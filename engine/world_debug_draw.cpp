@@ -249,7 +249,7 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
   const DynamicAabbTree* broadPhaseTree = tree();
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     const RigidBody& body = bodies_[i];
-    if (!body.hasFiniteState()) continue;
+    if (!body.hasFiniteState() || !present_[i]) continue;
     const Aabb box = body.collider().worldBounds(body.transform());
     if (!body.isStatic()) typicalSize = std::max(typicalSize, box.halfExtents().maxCoeff());
     const auto tagOfBody = [i](dd::Layer layer) { return dd::tagOf(layer, static_cast<int>(i)); };
@@ -298,9 +298,11 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
     emit(dd::tagOf(dd::Layer::Impulses), [&] { emitImpulses(shown, settings_.dt, impulseScale(), frame); });
   if (layers.has(dd::Layer::Pairs))
     emit(dd::tagOf(dd::Layer::Pairs), [&] {
-      for (const BodyPair& pair : pairs_)
+      for (const BodyPair& pair : pairs_) {
+        if (!present_[pair.a] || !present_[pair.b]) continue;  // found before a removal
         frame.lines.push_back({bodies_[pair.a].position(), bodies_[pair.b].position(), {0.9f, 0.5f, 0.9f, 1},
                                dd::tagOf(dd::Layer::Pairs, static_cast<int>(pair.a), static_cast<int>(pair.b))});
+      }
     });
 }
 
@@ -324,7 +326,8 @@ double World::impulseScale() const {
 
 // State, not drawing: what a viewer needs to label, follow and highlight a
 // body without the engine. A body whose state stopped being finite keeps its
-// index and flags, and zero vectors (a recording holds no NaN).
+// index and flags, and zero vectors (a recording holds no NaN). A removed
+// body is listed too, marked absent, so indices mean the same in every frame.
 void World::emitBodies(dd::Frame& frame) const {
   const std::vector<int> contactCounts = shownContactCounts(shownContacts(), bodies_.size());
   const DynamicAabbTree* broadPhaseTree = tree();
@@ -337,6 +340,7 @@ void World::emitBodies(dd::Frame& frame) const {
     info.treeParent = leafParent(broadPhaseTree, proxies_[i]);
     info.isStatic = body.isStatic();
     info.asleep = asleep_[i];
+    info.absent = !present_[i];
     if (!body.hasFiniteState()) continue;
     const Aabb bounds = body.collider().worldBounds(body.transform());
     info.position = body.position();

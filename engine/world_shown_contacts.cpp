@@ -7,13 +7,18 @@
 #include "engine/world.h"
 
 namespace physdbg {
+// A body removed after it touched leaves nothing behind: the frame shows the
+// world as it is, and a dot on a body that is not drawn would explain nothing.
 std::vector<ShownContact> World::shownContacts() const {
   if (stepCount_ == 0) return mergeContacts(initialContacts(), resting_);
-  return mergeContacts(keepHistory_ ? history_.points() : solver_->touchedPoints(contacts_), resting_);
+  std::vector<ShownContact> points =
+      mergeContacts(keepHistory_ ? history_.points() : solver_->touchedPoints(contacts_), resting_);
+  std::erase_if(points, [this](const ShownContact& point) { return !present_[point.pair.a] || !present_[point.pair.b]; });
+  return points;
 }
 
 bool World::atRest(const BodyPair& pair) const {
-  if (frozen_[pair.a] || frozen_[pair.b] || isMoving(pair.a) || isMoving(pair.b)) return false;
+  if (!takesPart(pair.a) || !takesPart(pair.b) || isMoving(pair.a) || isMoving(pair.b)) return false;
   return asleep_[pair.a] || asleep_[pair.b];
 }
 
@@ -55,7 +60,7 @@ std::vector<BodyPair> World::overlappingBoxes(double margin) const {
   std::vector<Aabb> boxes(bodies_.size());
   std::vector<BodyId> order;
   for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (frozen_[id] || !bodies_[id].hasFiniteState()) continue;
+    if (!takesPart(id) || !bodies_[id].hasFiniteState()) continue;
     boxes[id] = bodies_[id].collider().worldBounds(bodies_[id].transform()).enlarged(margin);
     order.push_back(id);
   }

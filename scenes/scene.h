@@ -41,6 +41,7 @@ struct SceneDescription {
   int steps = 240;
   std::vector<BodyDefinition> bodies;
   std::vector<ScheduledForce> forces;  // body indices are world body ids (after `repeat`)
+  std::vector<BodyLifetime> lifetimes;  // bodies added or removed during the run (world ids)
   std::optional<SceneCamera> camera;
   std::optional<std::string> layers;  // the scene's default debug layers
 };

@@ -155,23 +155,45 @@ void expandRepeat(const JsonReader& reader, const json& repeat, const std::strin
       }
 }
 
+// "add_at_step": N, "remove_at_step": M: the body is in the run for the
+// states N <= s < M (a state is the world after s steps).
+std::optional<BodyLifetime> readLifetime(const JsonReader& reader, const json& value, const std::string& path) {
+  if (!value.contains("add_at_step") && !value.contains("remove_at_step")) return std::nullopt;
+  BodyLifetime lifetime;
+  if (value.contains("add_at_step"))
+    lifetime.addAtStep = static_cast<int>(reader.integer(value["add_at_step"], path + ".add_at_step", 0, limits::maxSteps - 1));
+  if (value.contains("remove_at_step"))
+    lifetime.removeAtStep = static_cast<int>(
+        reader.integer(value["remove_at_step"], path + ".remove_at_step", lifetime.addAtStep + 1, limits::maxSteps));
+  return lifetime;
+}
+
 void readBody(const JsonReader& reader, const json& value, std::size_t entry, SceneDescription& scene) {
   const std::string path = "bodies[" + std::to_string(entry) + "]";
   reader.requireObject(value, path);
   reader.checkKeys(value, path,
                    {"name", "shape", "position", "orientation", "velocity", "angular_velocity", "mass", "static",
                     "restitution", "static_friction", "dynamic_friction", "drag", "angular_drag", "use_gravity",
-                    "lock_translation", "lock_rotation", "repeat", "kinematic"});
+                    "lock_translation", "lock_rotation", "repeat", "kinematic", "add_at_step", "remove_at_step"});
   BodyDefinition body;
   body.collider = readShape(reader, reader.required(value, path, "shape"), path + ".shape");
   readBodyKeys(reader, value, path, body);
   body = aboutCentreOfMass(body);  // the scene states the body where its centre of mass is
   const std::string name = value.contains("name") ? readBodyName(reader, value["name"], path + ".name") : "";
-  if (value.contains("repeat"))
-    return expandRepeat(reader, value["repeat"], path + ".repeat", body, entry, name, scene);
-  if (static_cast<long long>(scene.bodies.size()) >= limits::maxBodies)
-    reader.fail(path, "makes more than " + std::to_string(limits::maxBodies) + " bodies in the scene");
-  addBody(body, entry, name, scene);
+  const std::optional<BodyLifetime> lifetime = readLifetime(reader, value, path);
+  const std::size_t first = scene.bodies.size();
+  if (value.contains("repeat")) {
+    expandRepeat(reader, value["repeat"], path + ".repeat", body, entry, name, scene);
+  } else {
+    if (static_cast<long long>(scene.bodies.size()) >= limits::maxBodies)
+      reader.fail(path, "makes more than " + std::to_string(limits::maxBodies) + " bodies in the scene");
+    addBody(body, entry, name, scene);
+  }
+  if (!lifetime) return;
+  for (std::size_t id = first; id < scene.bodies.size(); ++id) {
+    scene.lifetimes.push_back(*lifetime);
+    scene.lifetimes.back().body = static_cast<BodyId>(id);
+  }
 }
 
 int readCount(const JsonReader& reader, const json& value, const std::string& path, int high) {
@@ -409,6 +431,13 @@ World buildWorld(const SceneDescription& scene) {
       world->scheduleForce(scene.forces[i]);
     } catch (const std::invalid_argument& error) {
       throw SceneError(source + ": forces[" + std::to_string(i) + "]: " + error.what());
+    }
+  }
+  for (const BodyLifetime& lifetime : scene.lifetimes) {
+    try {
+      world->scheduleLifetime(lifetime);
+    } catch (const std::invalid_argument& error) {
+      throw SceneError(source + ": body " + std::to_string(lifetime.body) + ": " + error.what());
     }
   }
   return std::move(*world);

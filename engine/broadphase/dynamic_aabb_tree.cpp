@@ -75,11 +75,15 @@ int DynamicAabbTree::createProxy(const Aabb& tightBox, std::uint32_t userData) {
   return leaf;
 }
 
+// A proxy removed for good is not reinserted, and the reinsertion is what
+// rotates a moved leaf's path: the walk up from its old place rotates by the
+// insertion's rules instead, so removals do not leave the tree worse.
 void DynamicAabbTree::destroyProxy(int proxy) {
   requireProxy(proxy, "destroyProxy");
-  removeLeaf(proxy);
+  const int formerSibling = removeLeaf(proxy);
   freeNode(proxy);
   --proxyCount_;
+  if (formerSibling != nullNode) refitAncestors(nodes_[formerSibling].parent);
 }
 
 bool DynamicAabbTree::moveProxy(int proxy, const Aabb& tightBox, const Vec3& displacement) {

@@ -39,4 +39,12 @@ void ContactEventTracker::update(const std::vector<Contact>& contacts, const std
   touching_ = std::move(now);
 }
 
+void ContactEventTracker::endPairsWith(std::uint32_t body, ContactListener* listener) {
+  std::erase_if(touching_, [body, listener](const BodyPair& pair) {
+    if (pair.a != body && pair.b != body) return false;
+    if (listener) listener->onContactEnd(pair.a, pair.b);
+    return true;
+  });
+}
+
 }  // namespace physdbg

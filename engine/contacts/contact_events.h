@@ -25,6 +25,8 @@ class ContactEventTracker {
  public:
   void update(const std::vector<Contact>& contacts, const std::vector<BodyPair>& dormant, ContactListener* listener);
   const std::vector<BodyPair>& touchingPairs() const { return touching_; }
+  // A body left the run: its pairs end now, in pair order, dormant or not.
+  void endPairsWith(std::uint32_t body, ContactListener* listener);
 
  private:
   std::vector<BodyPair> touching_;

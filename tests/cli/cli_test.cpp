@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -132,6 +133,40 @@ TEST(Cli, TraceHasTheDocumentedHeaderAndOneRowPerBodyPerStep) {
   const double h = 1.0 / 480.0;
   EXPECT_NEAR(values[4], 10 - 9.81 * h * h * 36, 1e-12);
   EXPECT_NEAR(values[11], -9.81 / 60.0, 1e-12);
+}
+
+// Bodies added or removed during the run: the trace lists a body only in the
+// states it is present in (add_at_step <= step < remove_at_step), and the
+// events say when the removed body's contact ended.
+TEST(Cli, TraceListsOnlyTheBodiesPresent) {
+  TempDir dir;
+  const std::string scene = dir.file("comings.json", R"({"steps": 6, "gravity": [0, 0, 0], "bodies": [
+      {"shape": {"sphere": {"radius": 0.5}}},
+      {"shape": {"sphere": {"radius": 0.5}}, "position": [3, 0, 0], "add_at_step": 2},
+      {"shape": {"sphere": {"radius": 0.5}}, "position": [0.998, 0, 0], "remove_at_step": 4}]})");
+  const std::string trace = dir.file("trace.csv");
+  const Result result = run("simulate " + scene + " --trace " + trace + " --events");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  std::ifstream file(trace);
+  std::string line;
+  std::getline(file, line);
+  std::map<int, std::vector<int>> bodiesAt;
+  while (std::getline(file, line)) {
+    std::istringstream row(line);
+    std::string step, time, body;
+    std::getline(row, step, ',');
+    std::getline(row, time, ',');
+    std::getline(row, body, ',');
+    bodiesAt[std::stoi(step)].push_back(std::stoi(body));
+  }
+  ASSERT_EQ(bodiesAt.size(), 7u);
+  for (int step = 0; step <= 6; ++step) {
+    std::vector<int> expected{0};
+    if (step >= 2) expected.push_back(1);
+    if (step < 4) expected.push_back(2);
+    EXPECT_EQ(bodiesAt[step], expected) << "step " << step;
+  }
+  EXPECT_NE(result.output.find("step 4 end 0 2"), std::string::npos) << result.output;
 }
 
 TEST(Cli, SimulateHashIsTheSameRunAfterRun) {

@@ -8,10 +8,14 @@
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/sphere_collider.h"
 #include "engine/world.h"
+#include "tests/engine/test_bodies.h"
 #include "scenes/scene.h"
 
 namespace physdbg {
 namespace {
+
+using testbodies::ball;
+using testbodies::floorSlab;
 
 struct RecordedEvent {
   enum Kind { Begin, Stay, End } kind;
@@ -35,21 +39,6 @@ class RecordingListener final : public ContactListener {
   }
   const World& world_;
 };
-
-BodyDefinition ball(const Vec3& position) {
-  BodyDefinition body;
-  body.collider = std::make_shared<SphereCollider>(0.5);
-  body.position = position;
-  return body;
-}
-
-BodyDefinition floorSlab() {
-  BodyDefinition body;
-  body.collider = std::make_shared<BoxCollider>(Vec3(10, 0.5, 10));
-  body.position = Vec3(0, -0.5, 0);
-  body.isStatic = true;
-  return body;
-}
 
 int count(const std::vector<RecordedEvent>& events, RecordedEvent::Kind kind) {
   int n = 0;

@@ -11,26 +11,15 @@
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/sphere_collider.h"
 #include "engine/world.h"
+#include "tests/engine/test_bodies.h"
 
 namespace physdbg {
 namespace {
 
+using testbodies::box;
+using testbodies::floorSlab;
+
 constexpr Material frictionless{0.0, 0.0, 0.0};
-
-BodyDefinition floorSlab() {
-  BodyDefinition body;
-  body.collider = std::make_shared<BoxCollider>(Vec3(10, 0.5, 10));
-  body.position = Vec3(0, -0.5, 0);
-  body.isStatic = true;
-  return body;
-}
-
-BodyDefinition box(const Vec3& position) {
-  BodyDefinition body;
-  body.collider = std::make_shared<BoxCollider>(Vec3(0.5, 0.5, 0.5));
-  body.position = position;
-  return body;
-}
 
 // Spins about the vertical axis on frictionless contacts: it stays where it
 // is and never slows down, so it is never slow enough to sleep.
