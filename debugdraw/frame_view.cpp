@@ -144,6 +144,7 @@ Vec3 centreOf(const BodyInfo& body) { return 0.5 * (body.boundsMin + body.bounds
 void addHighlightBoxes(const Frame& tagged, const Focus& focus, Frame& out) {
   for (int index : focus.bodies) {
     const BodyInfo& body = requireBody(tagged, index, "--highlight");
+    if (body.absent) continue;  // its body lines say so
     const Vec3 half = 0.5 * (body.boundsMax - body.boundsMin);
     out.wireBoxes.push_back({centreOf(body), Quat::Identity(), half * 1.04 + Vec3::Constant(1e-3 * half.norm()),
                              focusColor});
@@ -179,7 +180,7 @@ int addLabels(const Frame& tagged, const ViewSelection& selection, Frame& out) {
   std::vector<const BodyInfo*> order;
   std::set<int> placed;
   const auto enqueue = [&](const BodyInfo* body) {
-    if (body && placed.insert(body->index).second) order.push_back(body);
+    if (body && !body->absent && placed.insert(body->index).second) order.push_back(body);
   };
   for (int index : selection.highlight) enqueue(findBody(tagged, index));
   if (selection.follow) enqueue(findBody(tagged, *selection.follow));
@@ -220,6 +221,7 @@ void addBodyLines(const Frame& tagged, const ViewSelection& selection, Frame& ou
     std::string name = "body " + std::to_string(body.index);
     if (!body.name.empty()) name.append(" '").append(body.name, 0, 48).append("'");
     name += "  contacts " + std::to_string(body.contacts);
+    if (body.absent) name += "  absent";
     if (body.asleep) name += "  asleep";
     if (body.isStatic) name += "  static";
     const std::string state = "  p " + vectorText(body.position) + " m  v " + vectorText(body.linearVelocity) + " m/s";
@@ -276,7 +278,10 @@ Frame selectView(const Frame& tagged, const ViewSelection& selection, ViewReport
   out.bodies = tagged.bodies;
   stackLegends(out);
   if (focus.active()) addHighlightBoxes(tagged, focus, out);
-  if (selection.follow) addFollowMarker(requireBody(tagged, *selection.follow, "--follow"), out);
+  if (selection.follow) {
+    const BodyInfo& followed = requireBody(tagged, *selection.follow, "--follow");
+    if (!followed.absent) addFollowMarker(followed, out);
+  }
   if (focus.active() && selection.layers.has(Layer::Overlay)) addBodyLines(tagged, selection, out);
   const int leftOut = selection.labels ? addLabels(tagged, selection, out) : 0;
   if (report) report->labelsLeftOut = leftOut;

@@ -17,15 +17,15 @@ constexpr std::uint64_t chunkHeadBytes = 12;
 constexpr std::uint64_t maxFrameIndex = static_cast<std::uint64_t>(std::numeric_limits<int>::max());
 // Quaternion lengths the renderer can normalise without losing the rotation.
 constexpr double minRotationNorm = 1e-6, maxRotationNorm = 1e6;
-// The layer bits a version 2 tag may name (Shapes .. Grid). A new layer is a
+// The layer bits a version 2 or 3 tag may name (Shapes .. Grid). A new layer is a
 // new format version: an older reader could not say what to draw for it.
 constexpr std::uint32_t knownLayerBits = allLayerBits;
-// Encoded sizes in version 2: a tag (u32 layer, five i32) and the fixed part
+// Encoded sizes in versions 2 and 3: a tag (u32 layer, five i32) and the fixed part
 // of a label (before its tag) and of a body, strings without their characters.
 constexpr std::size_t tagBytes = 4 + 5 * 4;
 constexpr std::size_t labelBytes = 24 + 4 + 4 + 16;
 constexpr std::size_t bodyBytes = 4 + 4 + 5 * 24 + 3 * 4 + 1;
-constexpr std::uint8_t staticFlag = 1, asleepFlag = 2;
+constexpr std::uint8_t staticFlag = 1, asleepFlag = 2, absentFlag = 4;  // absent: version 3
 
 [[noreturn]] void refuse(const std::string& name, const std::string& what) {
   throw std::invalid_argument("recording '" + name + "': " + what);
@@ -428,23 +428,27 @@ void writeBody(ByteWriter& out, const BodyInfo& b) {
   out.text(b.name);
   for (const Vec3* v : {&b.position, &b.linearVelocity, &b.angularVelocity, &b.boundsMin, &b.boundsMax}) out.vec3(*v);
   for (const std::int32_t field : {b.contacts, b.treeLeaf, b.treeParent}) out.i32(field);
-  out.u8(static_cast<std::uint8_t>((b.isStatic ? staticFlag : 0) | (b.asleep ? asleepFlag : 0)));
+  out.u8(static_cast<std::uint8_t>((b.isStatic ? staticFlag : 0) | (b.asleep ? asleepFlag : 0) |
+                                   (b.absent ? absentFlag : 0)));
 }
 
 // `frame` and `item` name the body for flag bits the format does not define.
-void readBody(ByteReader& in, BodyInfo& b, int frame, std::ptrdiff_t item) {
+void readBody(ByteReader& in, BodyInfo& b, int frame, std::ptrdiff_t item, std::uint32_t version) {
   b.index = in.i32();
   b.name = in.text("a name");
   for (Vec3* v : {&b.position, &b.linearVelocity, &b.angularVelocity, &b.boundsMin, &b.boundsMax}) *v = in.vec3();
   for (std::int32_t* field : {&b.contacts, &b.treeLeaf, &b.treeParent}) *field = in.i32();
   const std::uint8_t flags = in.u8();
-  if ((flags & ~(staticFlag | asleepFlag)) != 0) {
+  const std::uint8_t known = staticFlag | asleepFlag | (version >= 3 ? absentFlag : 0);
+  if ((flags & ~known) != 0) {
     in.context("");
     in.fail("frame " + std::to_string(frame) + ", bodies item " + std::to_string(item) + ": flags " +
-            std::to_string(flags) + " set bits other than 0 (static) and 1 (asleep)");
+            std::to_string(flags) + " set bits other than 0 (static), 1 (asleep)" +
+            (version >= 3 ? " and 2 (absent)" : " (bit 2, absent, is version 3's)"));
   }
   b.isStatic = (flags & staticFlag) != 0;
   b.asleep = (flags & asleepFlag) != 0;
+  b.absent = (flags & absentFlag) != 0;
 }
 
 std::string encodeFrame(const RecordedFrame& recorded) {
@@ -538,7 +542,7 @@ void decodeFrame(ByteReader& in, const std::map<std::uint64_t, std::shared_ptr<c
   readList("texts", 32, f.texts, [&](Text& t) { t.x = in.f32(), t.y = in.f32(), t.scale = in.f32(), t.text = in.text(), t.color = in.color(); });
   if (version >= 2) {
     readList("labels", labelBytes, f.labels, [&](Label& l) { l.position = in.vec3(), l.scale = in.f32(), l.text = in.text(), l.color = in.color(); });
-    readList("bodies", bodyBytes, f.bodies, [&](BodyInfo& b) { readBody(in, b, out.index, &b - f.bodies.data()); });
+    readList("bodies", bodyBytes, f.bodies, [&](BodyInfo& b) { readBody(in, b, out.index, &b - f.bodies.data(), version); });
   }
   in.context("");
   if (!in.done()) in.fail("frame " + std::to_string(out.index) + " has trailing bytes");

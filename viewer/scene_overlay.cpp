@@ -19,7 +19,12 @@ void addOverlay(const SceneDescription& scene, const World& world, const Overlay
   // Candidate pairs come from a step's broad phase: before the first step
   // there are none to count, which "pairs 0" beside frame 0's contacts would hide.
   const std::string pairs = world.stepCount() == 0 ? "-" : std::to_string(stats.candidatePairs);
-  const int length = std::snprintf(line, sizeof line, "bodies %zu   pairs %s   contacts %d", world.bodyCount(),
+  std::size_t present = 0;
+  for (BodyId id = 0; id < world.bodyCount(); ++id) present += world.isPresent(id) ? 1 : 0;
+  // A scene that adds or removes bodies says how many of them are in the run now.
+  const std::string bodies =
+      present == world.bodyCount() ? std::to_string(present) : std::to_string(present) + " of " + std::to_string(world.bodyCount());
+  const int length = std::snprintf(line, sizeof line, "bodies %s   pairs %s   contacts %d", bodies.c_str(),
                                    pairs.c_str(), contactPairCount(world.shownContacts()));
   if (counters.stepMs && length > 0 && static_cast<std::size_t>(length) < sizeof line)
     std::snprintf(line + length, sizeof line - length, "   step %.3f ms", *counters.stepMs);

@@ -2,6 +2,8 @@
 // clear messages and exit code 2 for bad input, outputs where they belong.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "render/image.h"
 #include "tests/support/visual_test_support.h"
 
@@ -107,6 +109,27 @@ TEST(VisualCli, FollowKeepsTheBodyAtTheCentre) {
   const Result ortho = runPhysdbg("render bounce --frames 1 --size 96x64 --layers shapes --ortho --eye 0,30,0.1 "
                                   "--target 0,0,0 --fov 30 -o " + (folder / "ortho"));
   ASSERT_EQ(ortho.exitCode, 0) << ortho.output;
+}
+
+// A body that joins the run at step 2 and leaves at step 4 is drawn in
+// frames 2 and 3 only, at the centre the camera looks at; the recording of
+// the same run marks it absent in the other frames.
+TEST(VisualCli, BodiesAppearAndDisappearWithTheirLifetimes) {
+  ScratchFolder folder;
+  std::ofstream(folder / "visit.json") << R"({"gravity": [0, 0, 0], "camera": {"eye": [0, 0, 5], "target": [0, 0, 0]},
+      "bodies": [{"shape": {"sphere": {"radius": 0.2}}, "position": [2, 0, 0]},
+                 {"shape": {"box": {"half_extents": [0.5, 0.5, 0.5]}}, "add_at_step": 2, "remove_at_step": 4}]})";
+  const Result result =
+      runPhysdbg("render " + (folder / "visit.json") + " --frames 6 --size 64x48 --layers shapes -o " + (folder / "out"));
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  for (int frame = 0; frame < 6; ++frame) {
+    const physdbg::render::Image image =
+        physdbg::render::readPng(folder / ("out/frame_0000" + std::to_string(frame) + ".png"));
+    const std::size_t centre = (static_cast<std::size_t>(image.height / 2) * image.width + image.width / 2) * 4;
+    const bool background = std::abs(image.rgba[centre] - 28) <= 1 && std::abs(image.rgba[centre + 1] - 31) <= 1 &&
+                            std::abs(image.rgba[centre + 2] - 36) <= 1;
+    EXPECT_EQ(background, frame < 2 || frame >= 4) << "frame " << frame;
+  }
 }
 
 }  // namespace

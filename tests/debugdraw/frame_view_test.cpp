@@ -128,6 +128,27 @@ TEST(FrameView, HighlightOfABodyTheFrameLacksIsRefused) {
   }
 }
 
+// A body out of the run at this frame (added later, or removed) has no
+// shape to box, label or bracket: the overlay says it is absent instead.
+TEST(FrameView, AbsentBodyIsSaidAbsentNotBoxedLabelledOrBracketed) {
+  dd::Frame frame = threeBoxes();
+  frame.boxes.erase(frame.boxes.begin() + 2);
+  frame.bodies[2].absent = true;
+  dd::ViewSelection selection = showing("shapes,overlay");
+  selection.highlight = {2};
+  selection.labels = true;
+  selection.follow = 2;
+  const dd::Frame shown = dd::selectView(frame, selection);
+  for (const dd::WireBox& box : shown.wireBoxes) EXPECT_NE(box.tag.layer, 0u) << "no focus box";
+  for (const dd::Line& line : shown.lines) EXPECT_NE(line.tag.layer, 0u) << "no follow brackets";
+  ASSERT_EQ(shown.labels.size(), 2u);
+  for (const dd::Label& label : shown.labels) EXPECT_NE(label.text, "2");
+  const bool saysAbsent = std::any_of(shown.texts.begin(), shown.texts.end(), [](const dd::Text& text) {
+    return text.text.rfind("body 2", 0) == 0 && text.text.find("absent") != std::string::npos;
+  });
+  EXPECT_TRUE(saysAbsent);
+}
+
 TEST(FrameView, LabelsNameEveryBodyAndHighlightedFirst) {
   dd::Frame frame = threeBoxes();
   frame.bodies[2].name = "lid";

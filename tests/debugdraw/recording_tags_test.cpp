@@ -51,6 +51,7 @@ dd::BodyInfo crate(int index) {
   body.treeParent = 9;
   body.isStatic = index % 2 == 0;
   body.asleep = index % 3 == 0;
+  body.absent = index == 1;
   return body;
 }
 
@@ -102,8 +103,8 @@ void expectSameBody(const dd::BodyInfo& a, const dd::BodyInfo& b) {
   EXPECT_EQ(a.angularVelocity, b.angularVelocity);
   EXPECT_EQ(a.boundsMin, b.boundsMin);
   EXPECT_EQ(a.boundsMax, b.boundsMax);
-  EXPECT_EQ(std::make_tuple(a.contacts, a.treeLeaf, a.treeParent, a.isStatic, a.asleep),
-            std::make_tuple(b.contacts, b.treeLeaf, b.treeParent, b.isStatic, b.asleep));
+  EXPECT_EQ(std::make_tuple(a.contacts, a.treeLeaf, a.treeParent, a.isStatic, a.asleep, a.absent),
+            std::make_tuple(b.contacts, b.treeLeaf, b.treeParent, b.isStatic, b.asleep, b.absent));
 }
 
 // Tags, labels and bodies: the other fields are compared by recording_format_test.
@@ -131,7 +132,7 @@ TEST(RecordingTags, EveryListWithTagsLabelsAndBodiesRoundTripsExactly) {
   const dd::RecordedFrame written = everyList();
   const std::string bytes = recordingBytes({written});
   dd::RecordingReader reader = readerOf(bytes, "tags.rec");
-  EXPECT_EQ(reader.version(), 2u);
+  EXPECT_EQ(reader.version(), 3u);
   dd::RecordedFrame read;
   ASSERT_TRUE(reader.next(read));
   EXPECT_EQ(read.index, 7);
@@ -204,7 +205,7 @@ TEST(RecordingTags, Version1FilesStillReadWithDefaultTags) {
   EXPECT_EQ(f.texts[0].text, "step 3");
   EXPECT_EQ(f.texts[0].color.g, 0.25f);
   EXPECT_FALSE(reader.next(read));
-  // Written again, it is a version 2 file with the same primitives.
+  // Written again, it is a version 3 file with the same primitives.
   const std::vector<dd::RecordedFrame> again = dd::readRecordingBytes(recordingBytes({read}), "again.rec");
   ASSERT_EQ(again.size(), 1u);
   EXPECT_EQ(again[0].frame.primitiveCount(), 9u);
@@ -228,12 +229,22 @@ TEST(RecordingTags, ReplayOfAVersion1FileDrawsItAndRefusesViewChoices) {
 
 TEST(RecordingTags, NewerVersionsAreRefusedNamingTheVersion) {
   std::string bytes = recordingBytes({everyList()});
-  putNumber(bytes, 8, std::uint32_t{3});
+  putNumber(bytes, 8, std::uint32_t{4});
   const Decoded decoded = decodeBytes(bytes, "future.rec");
   EXPECT_TRUE(decoded.refused);
-  expectMentions(decoded.message, {"'future.rec'", "version 3", "versions 1 to 2"});
+  expectMentions(decoded.message, {"'future.rec'", "version 4", "versions 1 to 3"});
   putNumber(bytes, 8, std::uint32_t{0});
   expectMentions(decodeBytes(bytes, "zero.rec").message, {"'zero.rec'", "version 0"});
+}
+
+// The absent flag is version 3's: the same bytes labelled version 2 are
+// refused at the body that sets it (crate 1), saying which version has it.
+TEST(RecordingTags, AbsentFlagIsRefusedInAVersion2File) {
+  std::string bytes = recordingBytes({everyList()});
+  putNumber(bytes, 8, std::uint32_t{2});
+  const Decoded decoded = decodeBytes(bytes, "old.rec");
+  EXPECT_TRUE(decoded.refused);
+  expectMentions(decoded.message, {"'old.rec'", "bodies item 1", "flags 4", "version 3"});
 }
 
 // One field of everyList(), a valid marker value that occurs once in the
@@ -337,15 +348,15 @@ TEST(RecordingTags, LabelsAndBodiesOutsideTheirLimitsAreRefusedByReaderAndWriter
 }
 
 // The body flags byte is the last byte of a frame whose last list is bodies:
-// only bits 0 (static) and 1 (asleep) are defined.
+// only bits 0 (static), 1 (asleep) and 2 (absent) are defined.
 TEST(RecordingTags, UnknownBodyFlagsAreRefused) {
   std::string bytes = recordingBytes({everyList()});
   ASSERT_EQ(bytes.back(), 1);  // body 2: static, awake
-  bytes.back() = 3;
+  bytes.back() = 7;
   ASSERT_EQ(decodeBytes(bytes).frames, 1u);
-  bytes.back() = 4;
+  bytes.back() = 8;
   expectMentions(decodeBytes(bytes, "flags.rec").message,
-                 {"'flags.rec'", "frame 7, bodies item 2: flags 4 set bits other than 0 (static) and 1 (asleep)"});
+                 {"'flags.rec'", "frame 7, bodies item 2: flags 8 set bits other than 0 (static), 1 (asleep) and 2 (absent)"});
 }
 
 dd::RecordedFrame oneLabel(std::size_t characters) {
