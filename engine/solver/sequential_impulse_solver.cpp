@@ -98,10 +98,12 @@ double SequentialImpulseSolver::contactReach(const RigidBody& a, const RigidBody
   return 4.0 * settings_.linearSlop + closingSpeed * step.dt;
 }
 
-void SequentialImpulseSolver::clearContacts() {
+void SequentialImpulseSolver::beginStep(std::vector<RigidBody>&, const std::vector<bool>&, const StepContext&) {
   std::swap(previousManifolds_, manifolds_);
   manifolds_.clear();
 }
+
+void SequentialImpulseSolver::clearContacts() { manifolds_.clear(); }
 
 int SequentialImpulseSolver::addCandidate(const Contact& contact, const RigidBody& a, const RigidBody& b,
                                           double reach) {

@@ -26,7 +26,9 @@ class SequentialImpulseSolver final : public ContactSolver {
  public:
   explicit SequentialImpulseSolver(const SolverSettings& settings) : settings_(settings) {}
 
-  void beginStep(std::vector<RigidBody>&, const std::vector<bool>&, const StepContext&) override {}
+  // Last step's manifolds become the warm-start source here, once per step:
+  // a second narrow-phase pass (a touch woke a body) must not lose them.
+  void beginStep(std::vector<RigidBody>&, const std::vector<bool>&, const StepContext&) override;
   PredictedMotion predictMotion(const RigidBody& body, const StepContext& step) const override;
   double contactReach(const RigidBody& a, const RigidBody& b, const StepContext& step) const override;
   double touchingGap() const override { return settings_.linearSlop; }

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "engine/colliders/box_collider.h"
+#include "engine/colliders/sphere_collider.h"
 #include "engine/world.h"
 #include "scenes/body_builders.h"
 #include "scenes/stability_scenes.h"
@@ -71,6 +72,48 @@ TEST(ContactIslands, AStackMovesTheSameWhateverElseIsInTheWorld) {
     EXPECT_EQ(first.body(id).position(), second.body(id).position()) << "body " << id;
     EXPECT_EQ(first.body(id).orientation().coeffs(), second.body(id).orientation().coeffs()) << "body " << id;
   }
+}
+
+// A touch that wakes a sleeping body makes the world run the narrow phase
+// a second time in that step. That must not cost any other island its warm
+// start: a stack settling at x = 0 moves bit for bit as it does alone while,
+// 5 m away, a ball lands on a box that fell asleep long before.
+TEST(ContactIslands, ATouchWakeElsewhereKeepsEveryIslandsWarmStart) {
+  const auto unitBox = [](const Vec3& position) {
+    BodyDefinition body;
+    body.collider = std::make_shared<BoxCollider>(Vec3::Constant(0.5));
+    body.position = position;
+    return body;
+  };
+  const auto worldWith = [&](bool sleeperAndBall) {
+    World world;
+    BodyDefinition floor;
+    floor.collider = std::make_shared<BoxCollider>(Vec3(10, 0.5, 10));
+    floor.position = Vec3(0, -0.5, 0);
+    floor.isStatic = true;
+    world.addBody(floor);
+    for (int level = 0; level < 3; ++level) world.addBody(unitBox(Vec3(0, 2.5 + 1.0 * level, 0)));
+    if (sleeperAndBall) {
+      world.addBody(unitBox(Vec3(5, 0.5, 0)));
+      BodyDefinition ball = unitBox(Vec3(5, 6.5, 0));
+      ball.collider = std::make_shared<SphereCollider>(0.5);
+      world.addBody(ball);
+    }
+    return world;
+  };
+  World alone = worldWith(false), shared = worldWith(true);
+  bool wokeWhileStackMoved = false;
+  for (int step = 0; step < 150; ++step) {
+    const bool sleeperWasAsleep = shared.isAsleep(4);
+    alone.step();
+    shared.step();
+    if (sleeperWasAsleep && !shared.isAsleep(4) && !shared.isAsleep(1)) wokeWhileStackMoved = true;
+    for (BodyId id = 1; id <= 3; ++id) {
+      ASSERT_EQ(alone.body(id).position(), shared.body(id).position()) << "body " << id << ", step " << step + 1;
+      ASSERT_EQ(alone.body(id).linearVelocity(), shared.body(id).linearVelocity()) << "body " << id;
+    }
+  }
+  EXPECT_TRUE(wokeWhileStackMoved) << "the scene should wake the sleeper while the stack is awake";
 }
 
 }  // namespace
