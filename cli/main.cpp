@@ -28,6 +28,7 @@ const std::vector<Subcommand>& subcommands() {
       {"compare", "compare two PNGs like the golden tests; prints figures, writes a diff image",
        physdbg::cli::runCompare},
       {"report", "stability, accuracy and stage reports: PASS/FAIL tables, CSV, plots", physdbg::cli::runReport},
+      {"plot", "line plot of CSV columns (simulate --series) into a PNG", physdbg::cli::runPlot},
   };
   return commands;
 }
