@@ -40,8 +40,10 @@ std::string caption(const Arguments& parsed, const std::string& side, const Scen
 
 // Both runs at the first differing step, the differing body highlighted.
 void renderDivergence(const Arguments& parsed, const Divergence& divergence, const std::string& output) {
-  if (!divergence.step)
-    throw UsageError("--scene-a: the traces differ only in their columns, there is no step to draw");
+  if (!divergence.step) {
+    std::printf("nothing to draw: the traces differ only in their columns; %s not written\n", output.c_str());
+    return;
+  }
   if (*divergence.step > std::numeric_limits<int>::max() - 1 || *divergence.step > limits::maxFrames)
     throw UsageError("--scene-a: step " + std::to_string(*divergence.step) + " is beyond the frames render draws");
   const SceneDescription first = runScene(parsed, "a", "--scene-a");
@@ -97,8 +99,10 @@ int runDiff(const std::vector<std::string>& args) {
   TraceReader first(parsed->positional()[0]), second(parsed->positional()[1]);
   const Divergence divergence = findDivergence(first, second, tolerance);
   for (const std::string& line : divergence.lines) std::printf("%s\n", line.c_str());
-  if (!output.empty() && divergence.kind != Divergence::Kind::Agree) renderDivergence(*parsed, divergence, output);
-  if (!output.empty() && divergence.kind == Divergence::Kind::Agree) std::printf("nothing to draw: %s not written\n", output.c_str());
+  if (!output.empty() && divergence.kind == Divergence::Kind::Agree)
+    std::printf("nothing to draw: the traces agree; %s not written\n", output.c_str());
+  else if (!output.empty())
+    renderDivergence(*parsed, divergence, output);
   return divergence.kind == Divergence::Kind::Agree ? 0 : 1;
 }
 

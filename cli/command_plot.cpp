@@ -16,7 +16,7 @@ namespace physdbg::cli {
 namespace {
 
 // Rows held in memory (each column a double), and curves in one plot.
-constexpr long long maxPlotRows = 10'000'000;
+constexpr long long maxPlotRows = 1'000'000;
 constexpr std::size_t maxPlotColumns = 8;
 // More points than this per curve are thinned to each bucket's lowest and
 // highest value, in order: spikes stay visible, the drawing stays small.

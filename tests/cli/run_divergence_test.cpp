@@ -97,6 +97,19 @@ TEST_F(RunDivergence, NamesAnEditedValueAndAMissingRow) {
       << missing.output;
 }
 
+// A column only one trace has is a difference; the shared ones still agree.
+TEST_F(RunDivergence, NamesAColumnOnlyOneTraceHas) {
+  std::string text;
+  for (const std::string& line : readLines(traceA)) text += line.substr(0, line.rfind(',')) + "\n";
+  writeFile(folder / "narrow.csv", text);
+  const auto result = runPhysdbg("diff " + traceA + " " + folder / "narrow.csv" + " --scene-a " + same + " -o " +
+                                 folder / "never.png");
+  EXPECT_EQ(result.exitCode, 1) << result.output;
+  EXPECT_NE(result.output.find("column 'wz' is only in " + traceA), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("the 13 columns both have agree in all 33 rows"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("nothing to draw"), std::string::npos) << result.output;
+}
+
 TEST_F(RunDivergence, BadTracesExitTwoNamingFileLineAndColumn) {
   const std::string row = readLines(traceA).at(5);
   const std::string tail = row.substr(row.find(',') + 1);
