@@ -89,9 +89,15 @@ Divergence findDivergence(TraceReader& first, TraceReader& second, double tolera
   while (true) {
     const bool hasFirst = first.next(a), hasSecond = second.next(b);
     if (!hasFirst && !hasSecond) break;
-    if (!hasFirst) return endedEarly(first, second, b, result), result;
-    if (!hasSecond) return endedEarly(second, first, a, result), result;
-    if (a.step != b.step || a.body != b.body) return missingRow(first, a, second, b, result), result;
+    if (!hasFirst || !hasSecond) {
+      if (hasFirst) endedEarly(second, first, a, result);
+      else endedEarly(first, second, b, result);
+      return result;
+    }
+    if (a.step != b.step || a.body != b.body) {
+      missingRow(first, a, second, b, result);
+      return result;
+    }
     if (valueDiffers(first, a, second, b, columns, tolerance, result)) return result;
     ++rows;
   }

@@ -95,6 +95,17 @@ TEST_F(RunDivergence, NamesAnEditedValueAndAMissingRow) {
   EXPECT_EQ(missing.exitCode, 1);
   EXPECT_NE(missing.output.find("step 4 body 1 is in " + traceA + " (line 15) but not in"), std::string::npos)
       << missing.output;
+
+  lines = readLines(traceA);
+  lines.pop_back();
+  text.clear();
+  for (const std::string& line : lines) text += line + "\n";
+  writeFile(folder / "short.csv", text);
+  const auto shorter = runPhysdbg("diff " + folder / "short.csv" + " " + traceA);
+  EXPECT_EQ(shorter.exitCode, 1);
+  EXPECT_NE(shorter.output.find("short.csv ends before step 10 body 2, which " + traceA + " has (line 34)"),
+            std::string::npos)
+      << shorter.output;
 }
 
 // A column only one trace has is a difference; the shared ones still agree.
