@@ -80,7 +80,9 @@ void PlotAxisScale::linearTicks(double low, double high) {
 void PlotAxisScale::logarithmicTicks(double low, double high) {
   low_ = std::floor(low);
   high_ = std::ceil(high);
-  if (high_ - low_ < 1) high_ = low_ + 1;
+  // Values all on one power of ten: a decade either side, so they do not
+  // hide in the axis line.
+  if (high_ - low_ < 1) --low_, ++high_;
   const int every = static_cast<int>(std::ceil((high_ - low_) / 8.0));
   high_ = low_ + every * std::ceil((high_ - low_) / every);  // the top is labelled too
   for (double decade = low_; decade <= high_; decade += every)

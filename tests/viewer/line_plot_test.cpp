@@ -87,6 +87,8 @@ TEST(PlotAxis, TicksAreRoundAndLabelsShort) {
   for (const PlotTick& tick : logarithmic.ticks()) labels.push_back(tick.label);
   EXPECT_EQ(labels, (std::vector<std::string>{"1e-12", "1e-10", "1e-8", "1e-6", "0.0001", "0.01"}));
   EXPECT_FALSE(logarithmic.shows(0.0));
+  const PlotAxisScale exact({1e-16, 1e-16}, true);  // clamped round-off errors: in the middle, not on the axis
+  EXPECT_DOUBLE_EQ(exact.fraction(1e-16), 0.5);
   EXPECT_EQ(tickLabel(2e6), "2e6");
   EXPECT_EQ(tickLabel(-1e-15 * 0), "0");
   EXPECT_EQ(tickLabel(2.5e-5), "2.5e-5");
