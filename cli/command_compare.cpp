@@ -1,29 +1,17 @@
 // physdbg compare: the golden-image comparison as a command. Exit 0 when the
 // images match, 1 when they differ, 2 for bad usage or unreadable images.
-#include <charconv>
 #include <cstdio>
 #include <stdexcept>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/number_option.h"
 #include "cli/output_folder.h"
 #include "render/image.h"
 #include "render/image_compare.h"
 
 namespace physdbg::cli {
 namespace {
-
-template <typename Number>
-Number parseNumber(const Arguments& arguments, const std::string& option, Number fallback, Number low, Number high) {
-  if (!arguments.has(option)) return fallback;
-  const std::string text = arguments.value(option);
-  Number parsed{};
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), parsed);
-  if (error != std::errc() || end != text.data() + text.size() || !(parsed >= low && parsed <= high))
-    throw UsageError(option + " must be a number in " + std::to_string(low) + ".." + std::to_string(high) + ", got '" +
-                     text + "'");
-  return parsed;
-}
 
 render::Image readImage(const std::string& path) {
   try {
@@ -54,9 +42,9 @@ int runCompare(const std::vector<std::string>& args) {
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   render::CompareOptions options;
-  options.channelThreshold = parseNumber(*parsed, "--threshold", defaults.channelThreshold, 0, 255);
-  options.maxDifferentShare = parseNumber(*parsed, "--max-share", defaults.maxDifferentShare, 0.0, 1.0);
-  options.neighbourhoodRadius = parseNumber(*parsed, "--radius", defaults.neighbourhoodRadius, 0, 8);
+  options.channelThreshold = numberOption(*parsed, "--threshold", defaults.channelThreshold, 0, 255);
+  options.maxDifferentShare = numberOption(*parsed, "--max-share", defaults.maxDifferentShare, 0.0, 1.0);
+  options.neighbourhoodRadius = numberOption(*parsed, "--radius", defaults.neighbourhoodRadius, 0, 8);
   const std::string diff = parsed->value("--diff");
   if (parsed->has("--diff")) checkOutputFile(diff, "--diff");
   const render::Image expected = readImage(parsed->positional()[0]);

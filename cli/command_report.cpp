@@ -6,11 +6,14 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
+#include "cli/accuracy_plots.h"
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/common_options.h"
 #include "cli/output_folder.h"
+#include "render/renderer.h"
 #include "reports/accuracy_report.h"
 #include "reports/stability_report.h"
 #include "reports/stage_report.h"
@@ -61,6 +64,12 @@ int reportAccuracy(const Arguments& parsed) {
   reports::AccuracyOptions options;
   options.quick = parsed.has("--quick");
   options.outputDirectory = outputDirectory(parsed);
+  std::optional<render::Renderer> renderer;
+  if (!options.outputDirectory.empty()) {
+    renderer.emplace(render::RendererOptions{900, 600, 0, render::Backend::OsMesa});
+    options.plot = [&](const std::filesystem::path& png, const std::string& reference,
+                       const reports::AccuracyMethods& methods) { writeAccuracyPlot(*renderer, png, reference, methods); };
+  }
   std::cout << reports::runAccuracyReport(options, [](const std::string& line) {
     std::cout << line << std::endl;
   });

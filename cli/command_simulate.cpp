@@ -1,37 +1,31 @@
 // physdbg simulate: runs a scene without rendering; summary, CSV trace,
 // state hash, contact events.
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 
 #include "cli/arguments.h"
+#include "cli/limits.h"
 #include "cli/commands.h"
 #include "cli/common_options.h"
+#include "cli/csv_output.h"
 #include "cli/numerical_faults.h"
 #include "cli/output_folder.h"
 #include "cli/state_hash.h"
+#include "cli/step_series.h"
 #include "scenes/scene.h"
 
 namespace physdbg::cli {
 namespace {
 
-// Streams the trace row by row: nothing is held per step, so a long run
-// costs disk, not memory. A failed write (disk full, /dev/full) is an error
-// naming --trace and the path, found after each step and at the close.
+// One row per body per step. Full precision (%.17g) so a trace can be
+// compared bit for bit (`physdbg diff`).
 class TraceWriter {
  public:
-  explicit TraceWriter(const std::string& path) : path_(path) {
-    errno = 0;
-    file_.open(path);
-    if (!file_) throw outputError("--trace", path);
-    file_ << "step,time,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n";
-  }
+  explicit TraceWriter(const std::string& path)
+      : output_("--trace", path, "step,time,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz") {}
 
-  // Full precision (%.17g) so a trace can be compared bit for bit.
   void write(const World& world) {
-    errno = 0;
     char line[512];
     for (std::size_t i = 0; i < world.bodyCount(); ++i) {
       if (!world.isPresent(static_cast<BodyId>(i))) continue;  // added later in the run, or removed
@@ -44,26 +38,15 @@ class TraceWriter {
                     "%d,%.17g,%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
                     world.stepCount(), world.time(), i, p.x(), p.y(), p.z(), q.w(), q.x(), q.y(), q.z(), v.x(),
                     v.y(), v.z(), w.x(), w.y(), w.z());
-      file_ << line;
+      output_.writeLine(line);
     }
-    check();
+    output_.check();
   }
 
-  void close() {
-    errno = 0;
-    file_.flush();
-    check();
-    file_.close();
-    check();
-  }
+  void close() { output_.close(); }
 
  private:
-  void check() {
-    if (!file_) throw outputError("--trace", path_);
-  }
-
-  std::string path_;
-  std::ofstream file_;
+  CsvOutput output_;
 };
 
 // Prints contact events as they happen: "step 12 begin 0 3".
@@ -81,16 +64,25 @@ class EventPrinter final : public ContactListener {
   const World& world_;
 };
 
+// "step 120 hash 0123456789abcdef": the same hash as --hash, so the last
+// line of --hash-every equals --hash.
+void printStepHash(const World& world) {
+  std::printf("step %d hash %s\n", world.stepCount(), hexHash(worldStateHash(world)).c_str());
+}
+
 }  // namespace
 
 int runSimulate(const std::vector<std::string>& args) {
   CommandSpec spec{
       "simulate",
-      "SCENE [--steps N] [--trace FILE.csv] [--hash] [--events]",
+      "SCENE [--steps N] [--trace FILE.csv] [--series FILE.csv] [--hash] [--hash-every N] [--events]",
       "Runs SCENE (a built-in name or a scene file) without rendering and prints a summary.\n"
       "Exits with 1 when a body's state became NaN or Inf (the body is reported and frozen).",
       {{"--trace", "", "FILE.csv", "write every body's state at every step (step 0 = initial state)"},
+       {"--series", "", "FILE.csv",
+        "write whole-world figures per step: energies, momenta, contacts, penetration, awake, substeps, step time"},
        {"--hash", "", "", "print a hash of all body states at the end (determinism checks)"},
+       {"--hash-every", "", "N", "print 'step S hash H' every N steps (and after the last): where two runs part"},
        {"--events", "", "", "print contact events: 'step N begin|stay|end A B'"}},
       1,
       1};
@@ -107,15 +99,27 @@ int runSimulate(const std::vector<std::string>& args) {
     trace.emplace(parsed->value("--trace"));
     trace->write(world);
   }
+  std::optional<SeriesWriter> series;
+  if (parsed->has("--series")) {
+    series.emplace(parsed->value("--series"));
+    series->write(measureSeries(world, 0.0));
+  }
+  const int hashEvery = parsed->has("--hash-every")
+                            ? parsed->positiveInt("--hash-every", 1, static_cast<int>(limits::maxSteps))
+                            : 0;
 
   double stepSeconds = 0;
   for (int step = 0; step < steps; ++step) {
     const auto start = std::chrono::steady_clock::now();
     world.step();
-    stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stepSeconds += seconds;
     if (trace) trace->write(world);
+    if (series) series->write(measureSeries(world, 1e3 * seconds));
+    if (hashEvery > 0 && (world.stepCount() % hashEvery == 0 || step + 1 == steps)) printStepHash(world);
   }
   if (trace) trace->close();
+  if (series) series->close();
 
   double kineticEnergy = 0;
   for (std::size_t i = 0; i < world.bodyCount(); ++i) {

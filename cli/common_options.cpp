@@ -96,12 +96,12 @@ void addOptions(CommandSpec& spec, std::initializer_list<OptionGroup> groups) {
     for (OptionSpec& row : optionRows(group)) spec.options.push_back(std::move(row));
 }
 
-std::optional<SolverKind> readSolverKind(const Arguments& arguments) {
-  if (!arguments.has("--solver")) return std::nullopt;
-  const std::string name = arguments.value("--solver");
+std::optional<SolverKind> readSolverKind(const Arguments& arguments, const std::string& option) {
+  if (!arguments.has(option)) return std::nullopt;
+  const std::string name = arguments.value(option);
   for (const SolverKind kind : {SolverKind::Seed, SolverKind::SequentialImpulse})
     if (name == solverKindName(kind)) return kind;
-  throw UsageError("--solver: expected seed or sequential_impulse, got '" + name + "'");
+  throw UsageError(option + ": expected seed or sequential_impulse, got '" + name + "'");
 }
 
 SceneDescription readScene(const Arguments& arguments) {

@@ -71,8 +71,8 @@ debugdraw::LayerSet readLayers(const Arguments& arguments, const std::string& fa
 void readTreeDepth(const Arguments& arguments, ViewOptions& options, const std::string& layersFrom);
 // --follow, --eye, --target, --fov, --ortho (no scene to check --follow against).
 CameraOptions readCameraOptions(const Arguments& arguments);
-// --solver, when given.
-std::optional<SolverKind> readSolverKind(const Arguments& arguments);
+// --solver (or another option naming a solver kind), when given.
+std::optional<SolverKind> readSolverKind(const Arguments& arguments, const std::string& option = "--solver");
 // The scene named by the first positional argument (a built-in name or a
 // file), with --solver, when given, overriding the scene's solver kind.
 SceneDescription readScene(const Arguments& arguments);

@@ -28,6 +28,9 @@ const std::vector<Subcommand>& subcommands() {
       {"compare", "compare two PNGs like the golden tests; prints figures, writes a diff image",
        physdbg::cli::runCompare},
       {"report", "stability, accuracy and stage reports: PASS/FAIL tables, CSV, plots", physdbg::cli::runReport},
+      {"diff", "first step, body and field where two simulate traces differ; both runs drawn there",
+       physdbg::cli::runDiff},
+      {"plot", "line plot of CSV columns (simulate --series) into a PNG", physdbg::cli::runPlot},
   };
   return commands;
 }

@@ -1,5 +1,6 @@
-// Files and summary of the accuracy report. Plots are drawn by gnuplot when
-// it is on the PATH; without it the CSV files still carry every figure.
+// Files and summary of the accuracy report. Plots are drawn by the caller's
+// plot function (the physdbg command's one plotter), never by an outside
+// program: the report is the same on every machine.
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -7,12 +8,11 @@
 #include <stdexcept>
 
 #include "reports/accuracy_report.h"
-#include "reports/child_process.h"
 
 namespace physdbg::reports {
 namespace {
 
-using Grouped = std::map<std::string, std::map<std::string, std::vector<AccuracySample>>>;
+using Grouped = std::map<std::string, AccuracyMethods>;
 
 // Ordered by reference then method name: std::map keeps runs repeatable.
 Grouped group(const std::vector<AccuracySample>& samples) {
@@ -36,7 +36,7 @@ void writeFile(const std::filesystem::path& path, const std::string& text) {
 bool isTimeStep(const std::string& reference) { return reference.rfind("depth_", 0) != 0; }
 
 void writeCsv(const std::filesystem::path& directory, const std::string& reference,
-              const std::map<std::string, std::vector<AccuracySample>>& methods) {
+              const AccuracyMethods& methods) {
   std::string text = std::string("method,") + (isTimeStep(reference) ? "dt" : "tolerance") + ",error,ms,note\n";
   for (const auto& [method, samples] : methods) {
     for (const AccuracySample& s : samples) {
@@ -49,40 +49,6 @@ void writeCsv(const std::filesystem::path& directory, const std::string& referen
   writeFile(directory / (reference + ".csv"), text);
 }
 
-// gnuplot runs in `directory` (the script names its files relative to it),
-// with an argument vector: no shell ever sees the folder name.
-bool drawWithGnuplot(const std::filesystem::path& directory, const std::string& script) {
-  if (!findExecutable("gnuplot")) return false;
-  try {
-    return runChild({"gnuplot", {"./" + script}, directory.string(), true}).succeeded();
-  } catch (const std::runtime_error&) {
-    return false;
-  }
-}
-
-// One data block per method (gnuplot's `index`), errors clamped to 1e-16 so
-// exact results still appear on the log scale.
-bool writePlot(const std::filesystem::path& directory, const std::string& reference,
-               const std::map<std::string, std::vector<AccuracySample>>& methods) {
-  std::string data, plot;
-  int index = 0;
-  for (const auto& [method, samples] : methods) {
-    for (const AccuracySample& s : samples) {
-      data += number(std::max(s.milliseconds, 1e-6)) + " " + number(std::max(s.error, 1e-16)) + "\n";
-    }
-    data += "\n\n";
-    plot += std::string(index ? ", " : "plot ") + "'" + reference + ".dat' index " + std::to_string(index) +
-            " with linespoints title '" + method + "'";
-    ++index;
-  }
-  writeFile(directory / (reference + ".dat"), data);
-  writeFile(directory / (reference + ".gp"),
-            "set terminal pngcairo noenhanced size 900,600\nset output '" + reference +
-                ".png'\nset logscale xy\nset format y '%g'\nset xlabel 'run time (ms)'\nset ylabel 'error'\nset title '" + reference +
-                ": work-precision'\nset key bottom left\nset grid\n" + plot + "\n");
-  return drawWithGnuplot(directory, reference + ".gp");
-}
-
 std::string summaryTable(const Grouped& grouped) {
   std::string text =
       "| reference | method | fitted order | error (coarsest) | error (finest) | ms (finest) | note (finest) |\n"
@@ -90,7 +56,7 @@ std::string summaryTable(const Grouped& grouped) {
   for (const auto& [reference, methods] : grouped) {
     for (const auto& [method, samples] : methods) {
       const AccuracySample &coarsest = samples.front(), &finest = samples.back();
-      const std::string order = isTimeStep(reference) ? number(fittedOrder(samples)) : "n/a";
+      const std::string order = isTimeStep(reference) ? fitOrder(samples).text : "n/a (a tolerance sweep)";
       text += "| " + reference + " | " + method + " | " + order + " | " + number(coarsest.error) + " | " +
               number(finest.error) + " | " + number(finest.milliseconds) + " | " + finest.note + " |\n";
     }
@@ -104,19 +70,19 @@ std::string runAccuracyReport(const AccuracyOptions& options, const std::functio
   const Grouped grouped = group(runAccuracySweep(options.quick, progress));
   std::string summary = "# Accuracy\n\nTime-step references: dt from 1/30 s to 1/" +
                         std::string(options.quick ? "240" : "3840") +
-                        " s; the order is the slope of log error against log dt. Depth references: GJK/EPA "
+                        " s; the order is the slope of log error against log dt, given only where errors fall steadily with dt "
+                        "(otherwise the table says why; \"exact\" means round-off at every dt). Depth references: GJK/EPA "
                         "relative tolerance from 1e-2 to 1e-12 (coarsest to finest).\n\n" +
                         summaryTable(grouped);
   if (!options.outputDirectory.empty()) {
     int plots = 0;
     for (const auto& [reference, methods] : grouped) {
       writeCsv(options.outputDirectory, reference, methods);
-      plots += writePlot(options.outputDirectory, reference, methods) ? 1 : 0;
+      if (!options.plot) continue;
+      options.plot(options.outputDirectory / (reference + ".png"), reference, methods);
+      ++plots;
     }
-    summary += "\n";
-    summary += std::to_string(plots);
-    summary += plots ? " work-precision plots written (REFERENCE.png).\n"
-                     : " work-precision plots: gnuplot not found or failed; the CSV files hold every figure.\n";
+    summary += "\n" + std::to_string(plots) + " work-precision plots written (REFERENCE.png), CSV files beside them.\n";
     writeFile(options.outputDirectory / "accuracy.md", summary);
   }
   return summary;

@@ -1,20 +1,17 @@
 #pragma once
 // `physdbg report accuracy`: every analytic reference swept over dt (1/30 to
 // 1/3840 s) and solver settings, the contact depths over GJK/EPA tolerances.
-// Writes one CSV per reference, a work-precision plot per reference (gnuplot,
-// when installed), and returns a Markdown summary with the fitted
-// convergence order per method.
+// Writes one CSV per reference and returns a Markdown summary with the
+// convergence order per method and what it means. The plots are drawn by
+// whoever calls (the physdbg command, through the one plotter in viewer/):
+// reports/ links no renderer, so the engine-only build keeps its reports.
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
 namespace physdbg::reports {
-
-struct AccuracyOptions {
-  bool quick = false;                     // 4 time steps, fewer tolerances
-  std::filesystem::path outputDirectory;  // empty: no files
-};
 
 struct AccuracySample {
   std::string reference, method;
@@ -24,9 +21,33 @@ struct AccuracySample {
   std::string note;
 };
 
+// One reference's samples, by method name (ordered: repeatable files).
+using AccuracyMethods = std::map<std::string, std::vector<AccuracySample>>;
+
+struct AccuracyOptions {
+  bool quick = false;                     // 4 time steps, fewer tolerances
+  std::filesystem::path outputDirectory;  // empty: no files
+  // With an output directory: draws DIR/REFERENCE.png for one reference.
+  std::function<void(const std::filesystem::path& png, const std::string& reference, const AccuracyMethods& methods)>
+      plot;
+};
+
+// Errors at or below this are floating-point round-off, not a dt effect.
+inline constexpr double roundOffError = 1e-10;
+
+// The convergence order and what it means, for the summary: a number only
+// when one means something. "exact" when every error is round-off;
+// otherwise why no order is given (too few errors above round-off, errors
+// that do not fall as dt does, or rise somewhere on the way).
+struct OrderFit {
+  double order;      // the least-squares slope, NaN when none is given
+  std::string text;  // "2.00", "exact (...)", "none: ..."
+};
+OrderFit fitOrder(const std::vector<AccuracySample>& samples);
+
 // Least-squares slope of log(error) against log(parameter), over samples
-// with error above 1e-10 (below that it is rounding, and the slope says
-// nothing about dt). NaN with < 2 points.
+// with error above roundOffError (below that it is rounding, and the slope
+// says nothing about dt). NaN with < 2 points.
 double fittedOrder(const std::vector<AccuracySample>& samples);
 
 std::vector<AccuracySample> runAccuracySweep(bool quick, const std::function<void(const std::string&)>& progress);

@@ -83,20 +83,4 @@ std::vector<AccuracySample> runAccuracySweep(bool quick, const std::function<voi
   return samples;
 }
 
-double fittedOrder(const std::vector<AccuracySample>& samples) {
-  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (const AccuracySample& sample : samples) {
-    if (!(sample.error > 1e-10) || !(sample.parameter > 0.0)) continue;
-    const double x = std::log(sample.parameter), y = std::log(sample.error);
-    n += 1;
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  const double denominator = n * sxx - sx * sx;
-  if (n < 2 || denominator <= 0.0) return std::nan("");
-  return (n * sxy - sx * sy) / denominator;
-}
-
 }  // namespace physdbg::reports

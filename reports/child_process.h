@@ -1,12 +1,12 @@
 #pragma once
-// Runs another program (ffmpeg, gnuplot) from an argument vector, never
+// Runs another program (ffmpeg) from an argument vector, never
 // through a shell. Scene names and paths come from other people: passed as
 // separate arguments, quotes, semicolons and spaces stay literal text and
 // can never start a command.
 //
-// It lives in reports/ because that is the lowest library that both the
-// accuracy report (gnuplot) and the physdbg command (ffmpeg) link, and
-// reports/ may not depend on cli/. It needs nothing but POSIX.
+// It lives in reports/, which the physdbg command (ffmpeg) links, because the
+// accuracy report once ran gnuplot through it; plots are now drawn by
+// viewer/line_plot. It needs nothing but POSIX.
 #include <sys/types.h>
 
 #include <optional>

@@ -1,9 +1,12 @@
 #include "viewer/frame_renderer.h"
 
+#include <algorithm>
+#include <array>
 #include <stdexcept>
 #include <string>
 
 #include "debugdraw/frame_view.h"
+#include "render/text_geometry.h"
 #include "viewer/scene_camera.h"
 #include "viewer/scene_overlay.h"
 
@@ -42,14 +45,19 @@ debugdraw::Frame sceneFrame(const SceneDescription& scene, const World& world, d
 }
 
 render::Image renderViewFrame(render::Renderer& renderer, const SceneDescription& scene, int frameIndex,
-                              ViewOptions options) {
+                              ViewOptions options, const std::string& caption) {
   options.frames = {frameIndex, frameIndex + 1, false};
   options.runFrames = frameIndex + 1;
   options.width = renderer.options().width;
   options.height = renderer.options().height;
   options.timing = false;
   SceneFrames frames(scene, options);
-  const debugdraw::RecordedFrame frame = frames.frame(frameIndex);
+  debugdraw::RecordedFrame frame = frames.frame(frameIndex);
+  if (!caption.empty()) {
+    const std::array<float, 4> extent = render::textExtent({0, 0, 2, caption, {1, 1, 1, 1}});
+    const float x = std::max(8.0f, static_cast<float>(options.width) - (extent[2] - extent[0]) - 8.0f);
+    frame.frame.texts.push_back({x, 8, 2, caption, {1.0f, 0.85f, 0.3f, 1}});
+  }
   return renderer.render(frame.frame, toCamera(frame.view));
 }
 

@@ -25,9 +25,10 @@ debugdraw::Frame sceneFrame(const SceneDescription& scene, const World& world, d
                             int imageWidth = 320);
 
 // Frame `frameIndex` exactly as `physdbg render` draws it with `options`
-// (frames, size and timing are set here: the renderer's size, no timing).
+// (frames, size and timing are set here: the renderer's size, no timing);
+// a caption, when given, at the top right (which run a picture shows).
 render::Image renderViewFrame(render::Renderer& renderer, const SceneDescription& scene, int frameIndex,
-                              ViewOptions options);
+                              ViewOptions options, const std::string& caption = "");
 
 // All of the above at the renderer's size.
 render::Image renderSceneFrame(render::Renderer& renderer, const SceneDescription& scene, int steps,

@@ -103,10 +103,11 @@ TreePlot renderTreePlot(TreePanels& panels, const std::vector<Aabb>& boxes) {
   const dd::Color onColor{1.0f, 0.6f, 0.1f, 1}, offColor{0.4f, 0.6f, 1.0f, 1};
   const int width = panels.width, height = panels.height;
   dd::Frame sarFrame, heightFrame;
-  drawLinePlot("surface area ratio (lower is better)", "insertions",
+  drawLinePlot({"surface area ratio (lower is better)", {"insertions"}, {"SAR"}},
                {{"rotations", onColor, on.sar}, {"no rotations", offColor, off.sar}},
                {0, 0, double(width), double(height)}, sarFrame);
-  drawLinePlot("tree height", "insertions", {{"rotations", onColor, on.height}, {"no rotations", offColor, off.height}},
+  drawLinePlot({"tree height", {"insertions"}, {"height (levels)"}},
+               {{"rotations", onColor, on.height}, {"no rotations", offColor, off.height}},
                {0, 0, double(width), double(height)}, heightFrame);
   const render::Camera camera = pixelCamera(width, height);
   plot.image = sideBySide(panels.renderer.render(sarFrame, camera), panels.renderer.render(heightFrame, camera));

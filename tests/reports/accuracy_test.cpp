@@ -20,6 +20,28 @@ TEST(AccuracyReport, FittedOrderIgnoresRoundingLevelErrors) {
   EXPECT_TRUE(std::isnan(fittedOrder(samples)));
 }
 
+std::vector<AccuracySample> sweep(const std::vector<double>& errors) {
+  std::vector<AccuracySample> samples;
+  double dt = 1.0 / 30;
+  for (const double error : errors) {
+    samples.push_back({"r", "m", dt, error, 1.0, ""});
+    dt /= 2;
+  }
+  return samples;
+}
+
+// The summary's order column: a number only where it means one.
+TEST(AccuracyReport, OrderSaysExactNotMonotoneOrFlatInsteadOfANumber) {
+  EXPECT_EQ(fitOrder(sweep({4e-2, 1e-2, 2.5e-3, 6.25e-4})).text, "2.00");
+  EXPECT_EQ(fitOrder(sweep({3e-14, 1e-13, 2e-12, 1e-15})).text.rfind("exact (error at round-off", 0), 0u);
+  const OrderFit rising = fitOrder(sweep({1e-2, 5e-3, 8e-3, 1e-3}));
+  EXPECT_TRUE(std::isnan(rising.order));
+  EXPECT_EQ(rising.text, "none: not monotone, error rises from 0.005 at dt 1/60 to 0.008 at dt 1/120");
+  EXPECT_EQ(fitOrder(sweep({4.369, 4.369, 4.369, 4.369})).text.rfind("none: error does not fall with dt", 0), 0u);
+  EXPECT_EQ(fitOrder(sweep({1e-3, 1e-12, 1e-13, 1e-14})).text,
+            "none: only dt 1/30 has an error above round-off (0.001)");
+}
+
 const TimeStepReference& reference(const std::string& name) {
   static const auto references = timeStepReferences();
   for (const auto& entry : references) {
