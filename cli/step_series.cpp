@@ -13,8 +13,9 @@ SeriesRow measureSeries(const World& world, double stepMilliseconds) {
   const Vec3 gravity = world.settings().gravity;
   Vec3 momentum = Vec3::Zero(), angular = Vec3::Zero();
   for (std::size_t i = 0; i < world.bodyCount(); ++i) {
-    const RigidBody& body = world.body(static_cast<BodyId>(i));
-    if (!body.isDynamic() || world.isFrozen(static_cast<BodyId>(i))) continue;
+    const BodyId id = static_cast<BodyId>(i);
+    const RigidBody& body = world.body(id);
+    if (!body.isDynamic() || world.isFrozen(id) || !world.isPresent(id)) continue;  // absent: not in the run
     row.kineticEnergy += body.kineticEnergy();
     if (body.usesGravity()) row.potentialEnergy -= body.mass() * gravity.dot(body.position());
     const Vec3 linear = body.mass() * body.linearVelocity();
