@@ -22,5 +22,6 @@ int runTree(const std::vector<std::string>& args);
 int runRecord(const std::vector<std::string>& args);
 int runReplay(const std::vector<std::string>& args);
 int runReport(const std::vector<std::string>& args);
+int runGolden(const std::vector<std::string>& args);
 
 }  // namespace physdbg::cli

@@ -28,6 +28,8 @@ const std::vector<Subcommand>& subcommands() {
       {"compare", "compare two PNGs like the golden tests; prints figures, writes a diff image",
        physdbg::cli::runCompare},
       {"report", "stability, accuracy and stage reports: PASS/FAIL tables, CSV, plots", physdbg::cli::runReport},
+      {"golden", "approve and check golden images of your own scenes (manifest, HTML report, JUnit)",
+       physdbg::cli::runGolden},
   };
   return commands;
 }
