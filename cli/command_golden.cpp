@@ -90,11 +90,21 @@ std::vector<CaseResult> checkHere(const golden::Manifest& manifest, const std::v
   return results;
 }
 
+// Cases on other machines report back through the report folder, which they must share.
+void checkMachines(const Arguments& arguments) {
+  const std::string file = arguments.value("--sshloginfile");
+  if (!fs::is_regular_file(file)) throw UsageError("--sshloginfile: '" + file + "' is not a file");
+  if (!arguments.has("--report"))
+    throw UsageError("--sshloginfile: needs --report DIR on a folder every machine shares at the same path (the "
+                     "cases' results and pictures come back through it)");
+}
+
 std::vector<CaseResult> checkCases(const golden::Manifest& manifest, const std::vector<const ManifestCase*>& cases,
                                    const Arguments& arguments) {
   const int jobs = arguments.positiveInt("--jobs", 1, kMaxJobs);
   const std::string reportDir = arguments.value("--report");
   if (jobs == 1 && !arguments.has("--sshloginfile")) return checkHere(manifest, cases, reportDir);
+  if (arguments.has("--sshloginfile")) checkMachines(arguments);
   ParallelCheck check{manifest.file, {}, jobs, arguments.value("--sshloginfile"), reportDir};
   for (const ManifestCase* golden : cases) check.cases.push_back(golden->name);
   std::vector<CaseResult> results = checkThroughParallel(check);
