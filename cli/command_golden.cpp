@@ -37,8 +37,6 @@ const char kUsage[] =
     "in MANIFEST_DIR/golden/KEY/CASE/ (KEY names this machine's renderer); 'check' renders them again\n"
     "and compares. Run 'physdbg golden approve --help' or 'physdbg golden check --help' for options.\n";
 
-golden::Manifest loadManifest(const std::string& path) { return golden::readManifest(path); }
-
 std::vector<const ManifestCase*> selectCases(const golden::Manifest& manifest, const Arguments& arguments) {
   std::vector<const ManifestCase*> cases;
   const std::string only = arguments.value("--case");
@@ -56,7 +54,7 @@ int runApprove(const std::vector<std::string>& args) {
                          {kCaseOption}, 1, 1};
   const auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
-  const golden::Manifest manifest = loadManifest(parsed->positional()[0]);
+  const golden::Manifest manifest = golden::readManifest(parsed->positional()[0]);
   golden::RendererPool renderers;
   for (const ManifestCase* golden : selectCases(manifest, *parsed)) {
     const std::vector<fs::path> written =
@@ -148,7 +146,7 @@ int runCheck(const std::vector<std::string>& args) {
       1};
   const auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
-  const golden::Manifest manifest = loadManifest(parsed->positional()[0]);
+  const golden::Manifest manifest = golden::readManifest(parsed->positional()[0]);
   const std::vector<const ManifestCase*> cases = selectCases(manifest, *parsed);
   if (parsed->has("--report")) prepareOutputDirectory(parsed->value("--report"), "--report");
   for (const std::string option : {"--junit", "--result"})

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "golden/golden_store.h"
 #include "viewer/scene_frames.h"
 
 namespace physdbg::golden {
@@ -23,18 +22,6 @@ viewer::ViewOptions caseViewOptions(const ManifestCase& golden) {
 }
 
 }  // namespace
-
-render::Renderer& RendererPool::forSize(int width, int height) {
-  std::unique_ptr<render::Renderer>& renderer = renderers_[{width, height}];
-  if (!renderer) renderer = std::make_unique<render::Renderer>(render::RendererOptions{width, height, 0});
-  return *renderer;
-}
-
-render::GlIdentity RendererPool::identity() {
-  return renderers_.empty() ? forSize(64, 64).glIdentity() : renderers_.begin()->second->glIdentity();
-}
-
-std::string RendererPool::key() { return goldenKey(identity()); }
 
 std::vector<render::Image> renderCaseFrames(const ManifestCase& golden, RendererPool& renderers) {
   render::Renderer& renderer = renderers.forSize(golden.width, golden.height);
