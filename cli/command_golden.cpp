@@ -80,7 +80,7 @@ std::vector<CaseResult> checkHere(const golden::Manifest& manifest, const std::v
   golden::RendererPool renderers;
   std::vector<CaseResult> results;
   for (const ManifestCase* golden : cases) {
-    if (!reportDir.empty()) fs::remove_all(fs::path(reportDir) / golden->name);
+    if (!reportDir.empty()) fs::remove_all(fs::path(reportDir) / golden::reportCaseFolder(golden->name));
     results.push_back(asUsageError(
         [&] { return golden::checkCase(*golden, renderers, golden::storeRoot(manifest), reportDir); }));
     printResult(results.back());

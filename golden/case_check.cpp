@@ -18,7 +18,7 @@ constexpr char kRecordFile[] = "approved.json";
 std::string frameLabel(int frame) { return "frame " + std::to_string(frame); }
 
 std::string frameFolder(const ManifestCase& golden, int frame) {
-  return golden.name + "/" + fs::path(frameFileName(frame)).stem().string();
+  return (reportCaseFolder(golden.name) / fs::path(frameFileName(frame)).stem()).string();
 }
 
 // Every frame skipped for one reason: nothing was compared.
@@ -59,6 +59,8 @@ void removeUnlistedFrames(const ManifestCase& golden, const fs::path& folder) {
 }  // namespace
 
 fs::path storeRoot(const Manifest& manifest) { return manifest.folder / "golden"; }
+
+fs::path reportCaseFolder(const std::string& caseName) { return fs::path("cases") / caseName; }
 
 std::string describeCase(const ManifestCase& golden) {
   std::string text = "scene '" + golden.sceneName + "', " + std::to_string(golden.width) + "x" +

@@ -118,7 +118,7 @@ TEST_F(GoldenCommand, ShiftedApprovedFrameFailsWithReportAndJunit) {
   EXPECT_NE(checked.output.find("stack: failed"), std::string::npos) << checked.output;
   const std::string page = fileBytes(folder / "report/index.html");
   EXPECT_NE(page.find("stack, frame 12"), std::string::npos);
-  EXPECT_TRUE(fs::exists(folder / "report/stack/frame_00012/diff.png"));
+  EXPECT_TRUE(fs::exists(folder / "report/cases/stack/frame_00012/diff.png"));
   const std::string junit = fileBytes(folder / "junit.xml");
   EXPECT_NE(junit.find("<testcase classname=\"stack\" name=\"frame 12\""), std::string::npos) << junit;
   EXPECT_NE(junit.find("<failure message=\"DIFFERENT"), std::string::npos) << junit;
@@ -190,7 +190,7 @@ TEST_F(GoldenCommand, ParallelJobsGiveTheSameVerdictsAsOne) {
   EXPECT_EQ(two.exitCode, 1) << two.output;
   EXPECT_EQ(verdicts(folder / "one.xml"), verdicts(folder / "two.xml"));
   EXPECT_NE(two.output.find("1 passed, 1 failed, 0 skipped"), std::string::npos) << two.output;
-  EXPECT_TRUE(fs::exists(folder / "report/stack/frame_00012/diff.png"));
+  EXPECT_TRUE(fs::exists(folder / "report/cases/stack/frame_00012/diff.png"));
 }
 
 TEST_F(GoldenCommand, ParallelJobsWithoutGnuParallelExitTwo) {
