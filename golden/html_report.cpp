@@ -85,10 +85,14 @@ std::string pageText(const ReportPage& page, const std::vector<CaseResult>& resu
   const Tally counts = tally(results);
   std::ostringstream html;
   html << "<!doctype html><meta charset=utf-8><title>" << escapeMarkup(page.title) << "</title>\n"
-       << kStyle << "<h1>" << escapeMarkup(page.title) << "</h1>\n<p><span class=passed>" << counts.passed
-       << " passed</span>, <span class=failed>" << counts.failed << " failed</span>, <span class=skipped>"
-       << counts.skipped << " skipped</span> (skipped: nothing was compared). " << escapeMarkup(page.hint)
-       << "</p>\n<table><tr><th>case</th><th>verdict</th><th>frames</th><th>drawn</th><th>details</th></tr>\n";
+       << kStyle << "<h1>" << escapeMarkup(page.title) << "</h1>\n<p>";
+  if (page.failuresOnly)
+    html << "<span class=failed>" << counts.failed << " failed</span> (passing cases are not listed). ";
+  else
+    html << "<span class=passed>" << counts.passed << " passed</span>, <span class=failed>" << counts.failed
+         << " failed</span>, <span class=skipped>" << counts.skipped
+         << " skipped</span> (skipped: nothing was compared). ";
+  html << escapeMarkup(page.hint) << "</p>\n<table><tr><th>case</th><th>verdict</th><th>frames</th><th>drawn</th><th>details</th></tr>\n";
   for (const CaseResult& result : results) html << summaryRow(result);
   html << "</table>\n";
   for (const CaseResult& result : results)

@@ -16,6 +16,7 @@ namespace physdbg::golden {
 struct ReportPage {
   std::string title;
   std::string hint;  // what to run after an intended change
+  bool failuresOnly = false;  // the golden tests record failures only: no pass count to show
 };
 
 // Writes REPORT/index.html through a temporary file and a rename, so a reader

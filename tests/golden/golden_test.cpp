@@ -72,7 +72,7 @@ TEST_P(GoldenImage, MatchesApprovedImage) {
   const std::string drawn = golden.layers + " after " + std::to_string(golden.steps) + " steps";
   const FrameResult frame = checkFrame({drawn, &expected, &actual}, report, golden.name);
   const ReportPage page{"physdbg golden tests: failures",
-                        "If the change is intended: bash scripts/update-goldens.sh, then review the new PNGs."};
+                        "If the change is intended: bash scripts/update-goldens.sh, then review the new PNGs.", true};
   if (frame.verdict == Verdict::Passed) {
     clearCase(report, page, golden.name);
     return;
