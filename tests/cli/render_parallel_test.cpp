@@ -23,13 +23,13 @@ const std::string kView = " --size 96x72 --layers shapes,aabbs,overlay --no-timi
 TEST(RenderParallel, ChunksWriteTheFilesOfOneRun) {
   if (!findExecutable("parallel")) GTEST_SKIP() << "GNU parallel is not installed (bash scripts/setup.sh)";
   ScratchFolder folder;
-  ASSERT_EQ(runPhysdbg("render default -o " + (folder / "one") + " --frames 12" + kView).exitCode, 0);
+  ASSERT_EQ(runPhysdbg("render default -o " + (folder / "one") + " --frames 8" + kView).exitCode, 0);
   fs::create_directories(folder / "split");
   std::ofstream(folder / "split/frame_00099.png") << "left by an earlier run";
   ::setenv("PHYSDBG", PHYSDBG_BINARY, 1);
   ::setenv("LP_NUM_THREADS", "1", 1);
   ChildCommand split{"bash", {std::string(PHYSDBG_SOURCE_DIR) + "/scripts/render-parallel.sh", "-j", "2", "--chunks",
-                              "3", "default", "-o", folder / "split", "--frames", "12", "--size", "96x72", "--layers",
+                              "2", "default", "-o", folder / "split", "--frames", "8", "--size", "96x72", "--layers",
                               "shapes,aabbs,overlay", "--no-timing"},
                      "", true};
   ASSERT_TRUE(runChild(split).succeeded());
@@ -39,7 +39,7 @@ TEST(RenderParallel, ChunksWriteTheFilesOfOneRun) {
     EXPECT_EQ(fileBytes(entry.path().string()), fileBytes(folder / "split/" + entry.path().filename().string()))
         << entry.path().filename();
   }
-  EXPECT_EQ(frames, 12);
+  EXPECT_EQ(frames, 8);
   EXPECT_FALSE(fs::exists(folder / "split/frame_00099.png"));  // one run --frames N owns the folder
 }
 
