@@ -24,5 +24,6 @@ int runReplay(const std::vector<std::string>& args);
 int runReport(const std::vector<std::string>& args);
 int runDiff(const std::vector<std::string>& args);
 int runPlot(const std::vector<std::string>& args);
+int runGolden(const std::vector<std::string>& args);
 
 }  // namespace physdbg::cli

@@ -34,7 +34,10 @@ OptionSpec stepsOption(const std::string& help) { return {"--steps", "", "N", he
 std::vector<OptionSpec> sceneFramesOptions() {
   return {framesOption("frames 0..N-1, or A..B-1 of the full run (default: the scene's steps / K + 1)"),
           {"--steps-per-frame", "", "K", "simulation steps between frames (default 1)"},
-          {"--no-timing", "", "", "leave the measured step time out of the overlay (repeatable frames)"}};
+          {"--no-timing", "", "", "leave the measured step time out of the overlay (repeatable frames)"},
+          {"--of-run", "", "N|A:B",
+           "the --frames of the whole run a slice (--frames A:B) belongs to, so that its overlay counts frames as "
+           "that run's does (scripts/render-parallel.sh)"}};
 }
 
 std::vector<OptionSpec> focusOptions() {

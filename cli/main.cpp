@@ -31,6 +31,8 @@ const std::vector<Subcommand>& subcommands() {
       {"diff", "first step, body and field where two simulate traces differ; both runs drawn there",
        physdbg::cli::runDiff},
       {"plot", "line plot of CSV columns (simulate --series) into a PNG", physdbg::cli::runPlot},
+      {"golden", "approve and check golden images of your own scenes (manifest, HTML report, JUnit)",
+       physdbg::cli::runGolden},
   };
   return commands;
 }

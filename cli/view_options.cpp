@@ -35,6 +35,17 @@ int runFrameCount(const FrameRange& frames, const SceneDescription& scene, int s
   return static_cast<int>(std::max<long long>(sceneFrames, frames.last));
 }
 
+// --of-run: the whole run a slice belongs to, which must contain the slice.
+FrameRange wholeRun(const Arguments& arguments, const FrameRange& frames) {
+  if (!arguments.has("--of-run")) return frames;
+  if (!frames.slice) throw UsageError("--of-run: it belongs with a slice, --frames A:B");
+  const FrameRange run = parseFrameRange(arguments.value("--of-run"), "--of-run");
+  if (frames.first < run.first || frames.last > run.last)
+    throw UsageError("--of-run: the slice --frames " + std::to_string(frames.first) + ":" +
+                     std::to_string(frames.last) + " is not inside the run '" + arguments.value("--of-run") + "'");
+  return run;
+}
+
 void checkBodyIndex(int body, const std::string& option, const SceneDescription& scene) {
   if (body >= static_cast<int>(scene.bodies.size()))
     throw UsageError(option + ": scene '" + scene.name + "' has no body " + std::to_string(body) + " (it has " +
@@ -65,7 +76,7 @@ ViewOptions readViewOptions(const Arguments& arguments, const SceneDescription& 
   const std::optional<FrameRange> frames = readFrames(arguments);
   options.frames = frames ? *frames : defaultFrames(scene, options.stepsPerFrame);
   checkRunLength(options.frames, options.stepsPerFrame);
-  options.runFrames = runFrameCount(options.frames, scene, options.stepsPerFrame);
+  options.runFrames = runFrameCount(wholeRun(arguments, options.frames), scene, options.stepsPerFrame);
   std::tie(options.width, options.height) = readSize(arguments, defaultImageSize);
   options.layers = readLayers(arguments, scene.layers.value_or(defaultLayers));
   readTreeDepth(arguments, options, layersSource(arguments, scene));

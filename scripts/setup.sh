@@ -9,6 +9,7 @@ packages=(
   libosmesa6-dev libglew-dev libstb-dev libpng-dev libegl-dev libegl-mesa0
   libbullet-dev libccd-dev
   clang libclang-rt-14-dev
+  parallel
 )
 missing=()
 for package in "${packages[@]}"; do

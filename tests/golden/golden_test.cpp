@@ -9,10 +9,11 @@
 #include <iterator>
 #include <sstream>
 
+#include "golden/frame_check.h"
+#include "golden/golden_store.h"
+#include "golden/report_folder.h"
 #include "render/image_compare.h"
 #include "tests/golden/golden_cases.h"
-#include "tests/golden/golden_store.h"
-#include "tests/golden/html_report.h"
 #include "viewer/frame_renderer.h"
 
 namespace physdbg::golden {
@@ -67,16 +68,17 @@ TEST_P(GoldenImage, MatchesApprovedImage) {
   ASSERT_TRUE(fs::exists(expectedPath)) << expectedPath << " is missing; run bash scripts/update-goldens.sh";
   const render::Image expected = render::readPng(expectedPath.string());
   const render::Image actual = renderCase(golden);
-  const render::CompareResult result = render::compareImages(expected, actual);
   const fs::path report = PHYSDBG_GOLDEN_REPORT_DIR;
-  if (result.passed) {
-    clearFailure(report, golden.name);
+  const std::string drawn = golden.layers + " after " + std::to_string(golden.steps) + " steps";
+  const FrameResult frame = checkFrame({drawn, &expected, &actual}, report, golden.name);
+  const ReportPage page{"physdbg golden tests: failures",
+                        "If the change is intended: bash scripts/update-goldens.sh, then review the new PNGs.", true};
+  if (frame.verdict == Verdict::Passed) {
+    clearCase(report, page, golden.name);
     return;
   }
-  const render::Image diff = render::diffImage(expected, actual);
-  const std::string figures = render::describeComparison(result);
-  const fs::path folder = recordFailure(report, {golden.name, figures, &expected, &actual, &diff});
-  ADD_FAILURE() << golden.name << " (" << golden.layers << " after " << golden.steps << " steps): " << figures
+  const fs::path folder = recordCase(report, page, {golden.name, drawn, frame.verdict, "", {frame}, 0});
+  ADD_FAILURE() << golden.name << " (" << drawn << "): " << frame.figures
                 << "\n  expected, actual and diff images: " << folder.string()
                 << "\n  report: " << reportIndex(report).string()
                 << "\n  if the change is intended: bash scripts/update-goldens.sh";

@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <set>
 
+#include "golden/golden_store.h"
 #include "tests/golden/golden_cases.h"
-#include "tests/golden/golden_store.h"
 #include "viewer/frame_renderer.h"
 
 namespace fs = std::filesystem;

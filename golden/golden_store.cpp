@@ -1,6 +1,7 @@
-#include "tests/golden/golden_store.h"
+#include "golden/golden_store.h"
 
 #include <cctype>
+#include <cstdio>
 #include <stdexcept>
 
 namespace physdbg::golden {
@@ -37,6 +38,17 @@ std::string goldenKey(const render::GlIdentity& identity) {
 std::filesystem::path goldenPath(const std::filesystem::path& root, const std::string& key,
                                  const std::string& caseName) {
   return root / key / (caseName + ".png");
+}
+
+std::filesystem::path caseFolder(const std::filesystem::path& root, const std::string& key,
+                                 const std::string& caseName) {
+  return root / key / caseName;
+}
+
+std::string frameFileName(int frame) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05d.png", frame);
+  return name;
 }
 
 }  // namespace physdbg::golden
