@@ -102,7 +102,7 @@ std::vector<StabilityCase> stackingCases() {
                    "m", [](RunLength length) {
                      return length == RunLength::Test ? runPyramid(20, 300) : runPyramid(40, 600);
                    }});
-  for (const double ratio : {100.0, 1000.0}) {
+  for (const double ratio : {100.0, 1000.0, 10000.0}) {
     cases.push_back({"mass_ratio_" + std::to_string(static_cast<int>(ratio)),
                      "box of mass " + std::to_string(static_cast<int>(ratio)) +
                          " rests on a box of mass 1: it sinks < 0.05 m, drifts < 0.01 m",

@@ -54,7 +54,7 @@ SupportTable findSupports(std::size_t bodyCount, const std::vector<bool>& movabl
 
 std::vector<double> restingLoads(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                  const std::vector<ContactManifold>& manifolds, const std::vector<double>& touching,
-                                 const Vec3& up) {
+                                 const Vec3& up, const std::vector<std::pair<double, double>>* massScales) {
   std::vector<double> manifoldLoad(manifolds.size(), 0.0);
   if (manifolds.empty()) return manifoldLoad;
   const SupportTable table = findSupports(bodies.size(), movable, manifolds, touching, up);
@@ -72,7 +72,13 @@ std::vector<double> restingLoads(const std::vector<RigidBody>& bodies, const std
     for (std::uint32_t s = begin; s < end; ++s) {
       const Support& support = table.supports[s];
       manifoldLoad[support.manifold] += share / support.cosine;
-      if (movable[support.supporter]) carried[support.supporter] += share;
+      if (!movable[support.supporter]) continue;
+      double reaching = 1.0;
+      if (massScales) {
+        const auto& [scaleA, scaleB] = (*massScales)[support.manifold];
+        reaching = support.supporter == manifolds[support.manifold].a ? scaleA : scaleB;
+      }
+      carried[support.supporter] += share * reaching;
     }
   }
   return manifoldLoad;

@@ -15,6 +15,8 @@
 //   the solve near its answer; the solver still corrects any error in it.
 #include <vector>
 
+#include <utility>
+
 #include "engine/contacts/contact_manifold.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/math.h"
@@ -27,9 +29,12 @@ namespace physdbg {
 // movable body, highest first, passes its own mass plus what rests on it to
 // its supports, split evenly; a movable supporter passes it on in turn.
 // Manifolds that hold nothing up (walls, sides, bodies in free flight) get 0.
+// With `massScales` (per manifold, the factors on a's and b's inverse mass,
+// sequential_impulse_solver.h), a supporter passes on only the part of a load
+// its scaled contact lets reach it.
 std::vector<double> restingLoads(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                  const std::vector<ContactManifold>& manifolds, const std::vector<double>& touching,
-                                 const Vec3& up);
+                                 const Vec3& up, const std::vector<std::pair<double, double>>* massScales = nullptr);
 
 // Points that touch share a manifold's load.
 int touchingPoints(const ContactManifold& manifold, double touching);

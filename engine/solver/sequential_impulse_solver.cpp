@@ -63,9 +63,9 @@ inline double SequentialImpulseSolver::rowVelocity(const ContactManifold& manifo
 inline void SequentialImpulseSolver::applyRow(const ContactManifold& manifold, const PointConstraint& c,
                                               const Vec3& direction, int row, double impulse) {
   SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-  a.motion.linearVelocity -= (a.inverseMass * impulse) * direction.cwiseProduct(a.linearMask);
+  a.motion.linearVelocity -= (c.inverseMassA * impulse) * direction.cwiseProduct(a.linearMask);
   a.motion.angularVelocity -= impulse * c.turnA[row];
-  b.motion.linearVelocity += (b.inverseMass * impulse) * direction.cwiseProduct(b.linearMask);
+  b.motion.linearVelocity += (c.inverseMassB * impulse) * direction.cwiseProduct(b.linearMask);
   b.motion.angularVelocity += impulse * c.turnB[row];
 }
 
@@ -204,7 +204,7 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
   for (std::size_t m = 0; m < manifolds.size(); ++m)
     touching_[m] = std::min(settings_.linearSlop, 0.1 * bodySize(manifolds[m]));
   const double g = step.gravity.norm();
-  const std::vector<double> loads = g > 0.0 ? restingLoads(bodies, movable, manifolds, touching_, -step.gravity / g)
+  const std::vector<double> loads = g > 0.0 ? restingLoads(bodies, movable, manifolds, touching_, -step.gravity / g, &massScales_)
                                             : std::vector<double>(manifolds.size(), 0.0);
   lastSubstep_.resize(bodies.size(), 0.0);
   std::vector<bool> inIsland(bodies.size(), false);
@@ -357,11 +357,16 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
     }
   }
   constraints_.resize(manifolds.size() * ContactManifold::maxPoints);
+  massScales_ = supportMassScales(manifolds);
+  const std::vector<std::pair<double, double>>& scales = massScales_;
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
     ContactManifold& manifold = manifolds[m];
     const RigidBody &a = bodies[manifold.a], &b = bodies[manifold.b];
     const SolverBody &bodyA = solverBodies_[manifold.a], &bodyB = solverBodies_[manifold.b];
-    const double inverseMassSum = bodyA.inverseMass + bodyB.inverseMass;
+    const auto [scaleA, scaleB] = scales[m];
+    const double inverseMassA = scaleA * bodyA.inverseMass, inverseMassB = scaleB * bodyB.inverseMass;
+    const Mat3 inverseInertiaA = scaleA * bodyA.inverseInertia, inverseInertiaB = scaleB * bodyB.inverseInertia;
+    const double inverseMassSum = inverseMassA + inverseMassB;
     const CombinedMaterial material =
         combineMaterials(a.material(), b.material(), settings.restitutionCombine(), settings.frictionCombine());
     for (int p = 0; p < manifold.pointCount; ++p) {
@@ -379,14 +384,14 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
       for (int row = 0; row < 3; ++row) {
         c.crossA[row] = c.armA.cross(directions[row]);
         c.crossB[row] = c.armB.cross(directions[row]);
-        c.turnA[row] = (bodyA.inverseInertia * c.crossA[row]).cwiseProduct(bodyA.angularMask);
-        c.turnB[row] = (bodyB.inverseInertia * c.crossB[row]).cwiseProduct(bodyB.angularMask);
+        c.turnA[row] = (inverseInertiaA * c.crossA[row]).cwiseProduct(bodyA.angularMask);
+        c.turnB[row] = (inverseInertiaB * c.crossB[row]).cwiseProduct(bodyB.angularMask);
       }
-      c.normalMass =
-          effectiveMass(inverseMassSum, bodyA.inverseInertia, bodyB.inverseInertia, c.armA, c.armB, manifold.normal);
+      c.inverseMassA = inverseMassA;
+      c.inverseMassB = inverseMassB;
+      c.normalMass = effectiveMass(inverseMassSum, inverseInertiaA, inverseInertiaB, c.armA, c.armB, manifold.normal);
       for (int t = 0; t < 2; ++t)
-        c.tangentMass[t] =
-            effectiveMass(inverseMassSum, bodyA.inverseInertia, bodyB.inverseInertia, c.armA, c.armB, c.tangent[t]);
+        c.tangentMass[t] = effectiveMass(inverseMassSum, inverseInertiaA, inverseInertiaB, c.armA, c.armB, c.tangent[t]);
       const Vec3 relative = relativeVelocity(manifold, c);
       c.approachVelocity = relative.dot(manifold.normal);
       const double slidingSpeed = (relative - c.approachVelocity * manifold.normal).norm();
@@ -532,8 +537,9 @@ void SequentialImpulseSolver::prepareApproaches(const std::vector<ContactManifol
     if (!apart) continue;
     const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
     const Vec3& normal = manifold.normal;
-    const double linear = a.inverseMass * normal.cwiseProduct(a.linearMask).dot(normal) +
-                          b.inverseMass * normal.cwiseProduct(b.linearMask).dot(normal);
+    const PointConstraint& first = constraints_[m * ContactManifold::maxPoints];
+    const double linear = first.inverseMassA * normal.cwiseProduct(a.linearMask).dot(normal) +
+                          first.inverseMassB * normal.cwiseProduct(b.linearMask).dot(normal);
     Eigen::Matrix4d mass = Eigen::Matrix4d::Zero();
     for (int i = 0; i < manifold.pointCount; ++i)
       for (int j = 0; j < manifold.pointCount; ++j) {

@@ -65,6 +65,7 @@ class SequentialImpulseSolver final : public ContactSolver {
     double restitution = 0;
     double largestImpulse = 0;  // did this point ever push (restitution needs it)
     double gap = 0;             // separation at the current poses (measureGaps)
+    double inverseMassA = 0, inverseMassB = 0;  // the bodies' inverse masses, as scaled for this contact
   };
   // The solver's working copy of a body: its motion, integrated here through
   // every substep and written back to the RigidBody once per island, the
@@ -90,6 +91,9 @@ class SequentialImpulseSolver final : public ContactSolver {
                    const SubstepContext& substeps);
   void prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                std::vector<ContactManifold>& manifolds);
+  // Per manifold, the factors on a's and b's inverse mass and inertia: 1,
+  // except where a heavy body rests on a much lighter one (massRatioLimit).
+  std::vector<std::pair<double, double>> supportMassScales(const std::vector<ContactManifold>& manifolds) const;
   void integrateVelocities(const ContactIsland& island, double h);
   void integratePositions(const std::vector<std::uint32_t>& ids, double h);
   std::vector<std::uint32_t> kinematicNeighbours(const std::vector<RigidBody>& bodies,
@@ -130,6 +134,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   std::vector<Eigen::Matrix4d> approachMass_;     // per manifold, where approaching_: normal rows' J M^-1 J^T
   std::vector<Eigen::Matrix4d> approachInverse_;  // and its pseudo-inverse
   std::vector<double> lastSubstep_;               // per body: the substep it took last step (0: none yet)
+  std::vector<std::pair<double, double>> massScales_;  // per manifold, from supportMassScales
 };
 
 }  // namespace physdbg

@@ -73,6 +73,14 @@ struct SolverSettings {
   int maxSubsteps = 32;
   // Tangential speeds below this (m/s) use static friction, above it dynamic.
   double stickingSpeed = 0.02;
+  // Heavy on light: Gauss-Seidel hands a load down a chain of contacts at
+  // about (light / heavy) per pass, so a body far heavier than the one it
+  // rests on crushes it into the floor. Where a body rests on one more than
+  // this many times lighter (nearer the ground by contacts), that contact
+  // treats the lower body as only this many times lighter (mass scaling, as
+  // in shock propagation): the stack holds, the lower body feels less of the
+  // weight in that contact alone. 0 turns it off.
+  double massRatioLimit = 100.0;
 };
 
 inline CombineRule SolverSettings::restitutionCombine() const {
