@@ -6,24 +6,13 @@
 #include <stdexcept>
 #include <vector>
 
+#include "reports/html_index.h"
+
 namespace physdbg::golden {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string escapeHtml(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+using reports::escapeHtml;
 
 std::string readText(const fs::path& path) {
   std::ifstream file(path);
