@@ -91,6 +91,9 @@ std::vector<AccuracySample> runAccuracySweep(bool quick, const std::function<voi
 }
 
 std::vector<AccuracySample> runPeerAccuracySweep(bool quick, const SimulationFactory& peer, const std::string& peerName) {
+  // The first world a peer builds pays for its memory pools (Bullet: tens of
+  // ms, more than a whole run): built once here, untimed.
+  peer(SceneDescription{});
   std::vector<AccuracySample> samples;
   for (const TimeStepReference& reference : timeStepReferences()) {
     if (!reference.runIn) continue;

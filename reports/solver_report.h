@@ -24,7 +24,7 @@ struct SolverMeasure {
 };
 
 struct SolverPoint {
-  std::string scene, engine, setting;  // engine: "physdbg" or "bullet"
+  std::string scene, engine, setting;  // engine: "physdbg", "physdbg default" or the peer's name
   int substeps = 1, iterations = 1;
   SolverMeasure measure;
 };
@@ -51,9 +51,8 @@ struct SolverReport {
 // The scenes, by name, as the report runs them (sleeping off).
 std::vector<std::pair<std::string, SceneDescription>> solverReportScenes();
 
-// physdbg's settings are pinned: maxSubsteps = substeps, so the resting-load
-// stiffening cannot add substeps behind the setting's back.
-SolverMeasure runPhysdbgSolver(const SceneDescription& scene, int substeps, int iterations, int steps);
+// The scene in physdbg under `solver`, measured.
+SolverMeasure runPhysdbgSolver(SceneDescription scene, const SolverSettings& solver, int steps);
 
 SolverReport runSolverReport(const SolverReportOptions& options, const std::function<void(const std::string&)>& progress);
 
