@@ -1,5 +1,6 @@
 #include "bench/bullet_world.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -92,7 +93,26 @@ BulletWorld::~BulletWorld() = default;
 
 void BulletWorld::step() { impl_->world.stepSimulation(impl_->dt, 1, impl_->dt); }
 
+void BulletWorld::setSolverIterations(int iterations) { impl_->world.getSolverInfo().m_numIterations = iterations; }
+
 std::size_t BulletWorld::bodyCount() const { return impl_->bodies.size(); }
+
+Vec3 BulletWorld::linearVelocity(std::size_t body) const {
+  const btVector3& v = impl_->bodies.at(body)->getLinearVelocity();
+  return Vec3(v.x(), v.y(), v.z());
+}
+
+double BulletWorld::largestPenetration() const {
+  double deepest = 0.0;
+  btDispatcher& dispatcher = impl_->dispatcher;
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+    for (int c = 0; c < manifold->getNumContacts(); ++c) {
+      deepest = std::max(deepest, -double(manifold->getContactPoint(c).getDistance()));
+    }
+  }
+  return deepest;
+}
 
 Vec3 BulletWorld::position(std::size_t body) const {
   const btVector3& p = impl_->bodies.at(body)->getCenterOfMassPosition();
@@ -124,8 +144,11 @@ BulletWorld::BulletWorld(const SceneDescription&, bool) {
 }
 BulletWorld::~BulletWorld() = default;
 void BulletWorld::step() {}
+void BulletWorld::setSolverIterations(int) {}
 std::size_t BulletWorld::bodyCount() const { return 0; }
 Vec3 BulletWorld::position(std::size_t) const { return Vec3::Zero(); }
+Vec3 BulletWorld::linearVelocity(std::size_t) const { return Vec3::Zero(); }
+double BulletWorld::largestPenetration() const { return 0.0; }
 double BulletWorld::kineticEnergy() const { return 0.0; }
 
 #endif

@@ -28,8 +28,14 @@ class BulletWorld {
   BulletWorld& operator=(const BulletWorld&) = delete;
 
   void step();
+  // btContactSolverInfo::m_numIterations (Bullet's default is 10).
+  void setSolverIterations(int iterations);
   std::size_t bodyCount() const;
   Vec3 position(std::size_t body) const;  // in scene order
+  Vec3 linearVelocity(std::size_t body) const;
+  // m: the deepest contact point of the manifolds the last step solved
+  // (their distances are from before that step's integration); 0 when none overlap.
+  double largestPenetration() const;
   double kineticEnergy() const;           // of the dynamic bodies, J
 
  private:

@@ -1,20 +1,24 @@
-// physdbg report stability|accuracy|stages [-o DIR]: the reports of issue 9.
-// Tables go to stdout; with -o the same tables (Markdown, CSV) and plots are
-// written to DIR.
+// physdbg report stability|accuracy|solver|stages [-o DIR]: the reports of
+// issues 9 and 17. Tables go to stdout; with -o the same tables (Markdown,
+// CSV), plots and an index.html showing both are written to DIR.
 #include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <optional>
+#include <memory>
 
 #include "cli/accuracy_plots.h"
 #include "cli/arguments.h"
+#include "cli/bullet_peer_runs.h"
 #include "cli/commands.h"
 #include "cli/common_options.h"
 #include "cli/output_folder.h"
+#include "cli/solver_plots.h"
 #include "render/renderer.h"
 #include "reports/accuracy_report.h"
+#include "reports/html_index.h"
+#include "reports/solver_report.h"
 #include "reports/stability_report.h"
 #include "reports/stage_report.h"
 #include "scenes/scene.h"
@@ -38,6 +42,12 @@ std::filesystem::path outputDirectory(const Arguments& parsed) {
   return directory;
 }
 
+// The plots' renderer, made only when there is a folder to draw into.
+std::unique_ptr<render::Renderer> plotRenderer(const std::filesystem::path& directory) {
+  if (directory.empty()) return nullptr;
+  return std::make_unique<render::Renderer>(render::RendererOptions{900, 600, 0, render::Backend::OsMesa});
+}
+
 // Exit code 1 when any case fails, so scripts can gate on it.
 int reportStability(const Arguments& parsed) {
   const auto directory = outputDirectory(parsed);
@@ -53,6 +63,7 @@ int reportStability(const Arguments& parsed) {
   if (!directory.empty()) {
     writeText(directory / "stability.md", markdown);
     writeText(directory / "stability.csv", reports::stabilityCsv(rows));
+    reports::writeHtmlIndex(directory, "physdbg stability", markdown, {});
   }
   for (const auto& row : rows) {
     if (!row.outcome.pass) return 1;
@@ -64,15 +75,28 @@ int reportAccuracy(const Arguments& parsed) {
   reports::AccuracyOptions options;
   options.quick = parsed.has("--quick");
   options.outputDirectory = outputDirectory(parsed);
-  std::optional<render::Renderer> renderer;
-  if (!options.outputDirectory.empty()) {
-    renderer.emplace(render::RendererOptions{900, 600, 0, render::Backend::OsMesa});
-    options.plot = [&](const std::filesystem::path& png, const std::string& reference,
-                       const reports::AccuracyMethods& methods) { writeAccuracyPlot(*renderer, png, reference, methods); };
-  }
+  options.peer = bulletSimulation();
+  const auto renderer = plotRenderer(options.outputDirectory);
+  if (renderer) options.plot = [&](const auto& png, const auto& reference, const auto& methods) {
+    writeAccuracyPlot(*renderer, png, reference, methods);
+  };
   std::cout << reports::runAccuracyReport(options, [](const std::string& line) {
     std::cout << line << std::endl;
   });
+  return 0;
+}
+
+int reportSolver(const Arguments& parsed) {
+  reports::SolverReportOptions options;
+  options.quick = parsed.has("--quick");
+  options.outputDirectory = outputDirectory(parsed);
+  options.peer = bulletSolverRun();
+  const auto renderer = plotRenderer(options.outputDirectory);
+  if (renderer) options.plot = [&](const auto& png, const auto& scene, const auto& points) {
+    writeSolverPlot(*renderer, png, scene, points);
+  };
+  const auto progress = [](const std::string& line) { std::cout << line << std::endl; };
+  std::cout << reports::runSolverReport(options, progress).markdown;
   return 0;
 }
 
@@ -104,10 +128,11 @@ int reportStages(const Arguments& parsed) {
 
 int runReport(const std::vector<std::string>& args) {
   const CommandSpec spec{"report",
-                         "stability|accuracy|stages [-o DIR] [--quick] [--case NAME]",
+                         "stability|accuracy|solver|stages [-o DIR] [--quick] [--case NAME]",
                          "stability: stiff and extreme scenes, PASS/FAIL with the measured figure (exit 1 if any "
                          "fails).\naccuracy: analytic references swept over dt and solver settings: CSV, "
-                         "work-precision plot, convergence orders, Markdown summary.\nstages: which pipeline stages "
+                         "work-precision plot, convergence orders, Markdown summary.\nsolver: penetration and drift against ms per "
+                         "step on stiff stacks, physdbg settings against Bullet's iteration counts.\nstages: which pipeline stages "
                          "and debug layers each scene used, from the engine's counters.",
                          {outputOption("DIR", "also write the tables (and plots) to DIR"),
                           {"--quick", "", "", "short runs (the CTest versions of the stability cases)"},
@@ -119,8 +144,9 @@ int runReport(const std::vector<std::string>& args) {
   const std::string kind = parsed->positional()[0];
   if (kind == "stability") return reportStability(*parsed);
   if (kind == "accuracy") return reportAccuracy(*parsed);
+  if (kind == "solver") return reportSolver(*parsed);
   if (kind == "stages") return reportStages(*parsed);
-  throw UsageError("unknown report '" + kind + "' (stability, accuracy or stages)");
+  throw UsageError("unknown report '" + kind + "' (stability, accuracy, solver or stages)");
 }
 
 }  // namespace physdbg::cli

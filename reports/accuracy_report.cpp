@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "reports/accuracy_report.h"
+#include "reports/html_index.h"
 
 namespace physdbg::reports {
 namespace {
@@ -64,26 +65,49 @@ std::string summaryTable(const Grouped& grouped) {
   return text;
 }
 
+// Which references the peer ran, and why the others could not be.
+std::string peerText(const AccuracyOptions& options) {
+  if (!options.peer) return "\n" + options.peerName + ": not built (PHYSDBG_WITH_PEERS off or Bullet not found), so no peer series.\n";
+  std::string text = "\n" + options.peerName + " (its default sequential-impulse solver, 10 iterations, one substep per "
+                     "step, same scene and dt) runs as one more method where the reference can be expressed in it:\n\n";
+  for (const TimeStepReference& reference : timeStepReferences()) {
+    text += "- " + reference.name + ": " + (reference.runIn ? std::string("run") : reference.peerGap) + "\n";
+  }
+  return text + "- depth_*: not run in the peer: the sweep is over physdbg's own GJK/EPA tolerances\n";
+}
+
+std::vector<AccuracySample> allSamples(const AccuracyOptions& options,
+                                       const std::function<void(const std::string&)>& progress) {
+  std::vector<AccuracySample> samples = runAccuracySweep(options.quick, progress);
+  if (!options.peer) return samples;
+  if (progress) progress("accuracy: " + options.peerName);
+  const auto peer = runPeerAccuracySweep(options.quick, options.peer, options.peerName);
+  samples.insert(samples.end(), peer.begin(), peer.end());
+  return samples;
+}
+
 }  // namespace
 
 std::string runAccuracyReport(const AccuracyOptions& options, const std::function<void(const std::string&)>& progress) {
-  const Grouped grouped = group(runAccuracySweep(options.quick, progress));
+  const Grouped grouped = group(allSamples(options, progress));
   std::string summary = "# Accuracy\n\nTime-step references: dt from 1/30 s to 1/" +
                         std::string(options.quick ? "240" : "3840") +
                         " s; the order is the slope of log error against log dt, given only where errors fall steadily with dt "
                         "(otherwise the table says why; \"exact\" means round-off at every dt). Depth references: GJK/EPA "
                         "relative tolerance from 1e-2 to 1e-12 (coarsest to finest).\n\n" +
-                        summaryTable(grouped);
+                        summaryTable(grouped) + peerText(options);
   if (!options.outputDirectory.empty()) {
-    int plots = 0;
+    std::vector<std::string> plots;
     for (const auto& [reference, methods] : grouped) {
       writeCsv(options.outputDirectory, reference, methods);
       if (!options.plot) continue;
       options.plot(options.outputDirectory / (reference + ".png"), reference, methods);
-      ++plots;
+      plots.push_back(reference + ".png");
     }
-    summary += "\n" + std::to_string(plots) + " work-precision plots written (REFERENCE.png), CSV files beside them.\n";
+    summary += "\n" + std::to_string(plots.size()) +
+               " work-precision plots written (REFERENCE.png), CSV files beside them.\n";
     writeFile(options.outputDirectory / "accuracy.md", summary);
+    writeHtmlIndex(options.outputDirectory, "physdbg accuracy", summary, plots);
   }
   return summary;
 }

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "reports/accuracy_references.h"
+
 namespace physdbg::reports {
 
 struct AccuracySample {
@@ -30,6 +32,10 @@ struct AccuracyOptions {
   // With an output directory: draws DIR/REFERENCE.png for one reference.
   std::function<void(const std::filesystem::path& png, const std::string& reference, const AccuracyMethods& methods)>
       plot;
+  // The peer engine (Bullet, wired by the caller) for the references it can
+  // express: drawn as one more method. Empty: the summary says it was not built.
+  SimulationFactory peer;
+  std::string peerName = "bullet";
 };
 
 // Errors at or below this are floating-point round-off, not a dt effect.
@@ -51,6 +57,10 @@ OrderFit fitOrder(const std::vector<AccuracySample>& samples);
 double fittedOrder(const std::vector<AccuracySample>& samples);
 
 std::vector<AccuracySample> runAccuracySweep(bool quick, const std::function<void(const std::string&)>& progress);
+
+// The time-step references the peer can run, over the same dt values; the
+// method is named after the peer ("bullet (own solver)").
+std::vector<AccuracySample> runPeerAccuracySweep(bool quick, const SimulationFactory& peer, const std::string& peerName);
 
 // Runs the sweep, writes the files and returns the Markdown summary.
 std::string runAccuracyReport(const AccuracyOptions& options, const std::function<void(const std::string&)>& progress);

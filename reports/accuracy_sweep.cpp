@@ -34,31 +34,38 @@ double timedMilliseconds(Run&& run) {
   return 1000.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+std::vector<int> sweepRates(bool quick) {
+  return quick ? std::vector<int>{30, 60, 120, 240} : std::vector<int>{30, 60, 120, 240, 480, 960, 1920, 3840};
+}
+
+// Runs are deterministic: repeats change only the time, and the fastest is
+// the least disturbed by other work on the machine.
+AccuracySample timedSample(const std::string& reference, const std::string& method, const WorldSettings& settings,
+                           int repeats, const std::function<ReferenceResult(const WorldSettings&)>& run) {
+  AccuracySample sample{reference, method, settings.dt, 0.0, 1e300, ""};
+  for (int repeat = 0; repeat < repeats; ++repeat) {
+    sample.milliseconds = std::min(sample.milliseconds, timedMilliseconds([&] {
+      const ReferenceResult result = run(settings);
+      sample.error = result.error;
+      sample.note = result.note;
+    }));
+  }
+  return sample;
+}
+
 }  // namespace
 
 std::vector<AccuracySample> runAccuracySweep(bool quick, const std::function<void(const std::string&)>& progress) {
-  const std::vector<int> rates = quick ? std::vector<int>{30, 60, 120, 240}
-                                       : std::vector<int>{30, 60, 120, 240, 480, 960, 1920, 3840};
-  // Runs are deterministic: repeats change only the time, and the fastest
-  // is the least disturbed by other work on the machine.
   const int timingRepeats = quick ? 1 : 3;
   std::vector<AccuracySample> samples;
   for (const TimeStepReference& reference : timeStepReferences()) {
     if (progress) progress("accuracy: " + reference.name);
     for (const SolverMethod& method : solverMethods()) {
-      for (const int rate : rates) {
+      for (const int rate : sweepRates(quick)) {
         WorldSettings settings;
         settings.dt = 1.0 / rate;
         settings.solver = method.solver;
-        AccuracySample sample{reference.name, method.name, settings.dt, 0.0, 1e300, ""};
-        for (int repeat = 0; repeat < timingRepeats; ++repeat) {
-          sample.milliseconds = std::min(sample.milliseconds, timedMilliseconds([&] {
-            const ReferenceResult result = reference.run(settings);
-            sample.error = result.error;
-            sample.note = result.note;
-          }));
-        }
-        samples.push_back(sample);
+        samples.push_back(timedSample(reference.name, method.name, settings, timingRepeats, reference.run));
       }
     }
   }
@@ -78,6 +85,23 @@ std::vector<AccuracySample> runAccuracySweep(bool quick, const std::function<voi
                               }) / repeats;
         samples.push_back(sample);
       }
+    }
+  }
+  return samples;
+}
+
+std::vector<AccuracySample> runPeerAccuracySweep(bool quick, const SimulationFactory& peer, const std::string& peerName) {
+  // The first world a peer builds pays for its memory pools (Bullet: tens of
+  // ms, more than a whole run): built once here, untimed.
+  peer(SceneDescription{});
+  std::vector<AccuracySample> samples;
+  for (const TimeStepReference& reference : timeStepReferences()) {
+    if (!reference.runIn) continue;
+    const auto run = [&](const WorldSettings& settings) { return reference.runIn(settings, peer); };
+    for (const int rate : sweepRates(quick)) {
+      WorldSettings settings;
+      settings.dt = 1.0 / rate;
+      samples.push_back(timedSample(reference.name, peerName + " (own solver)", settings, quick ? 1 : 3, run));
     }
   }
   return samples;

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
+#include "bench/bullet_world.h"
 #include "render/image.h"
 #include "tests/cli/cli_test_support.h"
 
@@ -53,6 +55,12 @@ TEST(PlotCommand, AccuracyReportPlotsWithoutGnuplot) {
   EXPECT_NE(result.output.find("| tumbling_box | seed | exact (error at round-off"), std::string::npos)
       << result.output;
   EXPECT_EQ(result.output.find("| nan |"), std::string::npos) << result.output;
+  std::ifstream indexFile(folder / "acc/index.html");
+  const std::string index(std::istreambuf_iterator<char>(indexFile), {});
+  EXPECT_NE(index.find("<img src=\"free_fall.png\""), std::string::npos) << index;
+  const bool bullet = physdbg::bench::BulletWorld::available();
+  EXPECT_EQ(result.output.find("| free_fall | bullet (own solver) |") != std::string::npos, bullet) << result.output;
+  EXPECT_EQ(result.output.find("bullet: not built") != std::string::npos, !bullet) << result.output;
 }
 
 }  // namespace
