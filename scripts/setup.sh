@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev nlohmann-json3-dev libgtest-dev
   libosmesa6-dev libglew-dev libstb-dev libpng-dev libegl-dev libegl-mesa0
   libbullet-dev libccd-dev
+  libtbb-dev
   clang libclang-rt-14-dev
   parallel
 )

@@ -1,0 +1,43 @@
+#include "engine/parallel/task_system.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <thread>
+
+namespace physdbg {
+
+// An arena caps the threads a world uses, whatever else the process runs.
+struct TaskSystem::Arena {
+  explicit Arena(int threads) : arena(threads) {}
+  tbb::task_arena arena;
+};
+
+int TaskSystem::hardwareThreads() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+
+TaskSystem::TaskSystem(int threads) : threads_(threads <= 0 ? hardwareThreads() : threads) {
+  if (threads_ > 1) arena_ = std::make_unique<Arena>(threads_);
+}
+
+TaskSystem::~TaskSystem() = default;
+
+void TaskSystem::parallelFor(std::size_t count, std::size_t grain,
+                             const std::function<void(std::size_t, std::size_t)>& body) const {
+  if (count == 0) return;
+  grain = std::max<std::size_t>(grain, 1);
+  if (!arena_ || count <= grain) {
+    body(0, count);
+    return;
+  }
+  arena_->arena.execute([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, count, grain),
+        [&](const tbb::blocked_range<std::size_t>& range) { body(range.begin(), range.end()); },
+        tbb::simple_partitioner());
+  });
+}
+
+}  // namespace physdbg
