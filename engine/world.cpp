@@ -9,6 +9,7 @@
 #include "engine/broadphase/tree_broad_phase.h"
 #include "engine/disjoint_sets.h"
 #include "engine/narrowphase/narrow_phase.h"
+#include "engine/parallel/task_system.h"
 
 namespace physdbg {
 namespace {
@@ -32,7 +33,8 @@ std::unique_ptr<BroadPhase> makeBroadPhase(const WorldSettings& settings) {
 World::World(const WorldSettings& settings)
     : settings_(settings),
       broadPhase_(makeBroadPhase(settings)),
-      solver_(makeContactSolver(settings.solver, settings.narrowPhase)) {
+      solver_(makeContactSolver(settings.solver, settings.narrowPhase)),
+      tasks_(std::make_unique<TaskSystem>(settings.threads)) {
   if (!(settings.dt > 0.0) || !std::isfinite(settings.dt)) throw std::invalid_argument("dt must be positive");
   if (!isFinite(settings.gravity)) throw std::invalid_argument("gravity must be finite");
   if (!(settings.fatMargin >= 0.0)) throw std::invalid_argument("fat margin must not be negative");
@@ -68,7 +70,7 @@ const DynamicAabbTree* World::tree() const {
 // (the design's order), sequential impulses inside its substeps.
 void World::step() {
   stats_ = StepStats{};
-  const StepContext context{settings_.dt, settings_.gravity};
+  const StepContext context{settings_.dt, settings_.gravity, tasks_.get()};
   applyForces();  // gravity, user forces and impulses
   solver_->beginStep(bodies_, movableBodies(), context);
   freezeNonFiniteBodies();

@@ -26,6 +26,7 @@ namespace physdbg {
 
 using BodyId = std::uint32_t;
 class DynamicAabbTree;
+class TaskSystem;
 
 enum class BroadPhaseKind { Tree, BruteForce };
 
@@ -48,6 +49,10 @@ struct WorldSettings {
   double sleepLinearSpeed = 0.05;   // m/s
   double sleepAngularSpeed = 0.05;  // rad/s
   double timeToSleep = 0.5;         // s below both speeds before sleeping
+
+  // Threads the step may use: 0 one per hardware thread, 1 none spawned. The
+  // states are bit-identical for every count.
+  int threads = 0;
 
   SolverSettings solver;  // sequential impulses by default; solver.seed for the design's
   NarrowPhaseOptions narrowPhase;
@@ -232,6 +237,7 @@ class World {
   std::vector<BodyPair> pairs_;
   std::vector<Contact> contacts_;  // this step's touching pairs
   std::unique_ptr<ContactSolver> solver_;
+  std::unique_ptr<TaskSystem> tasks_;
   std::vector<bool> movable_;  // isMoving, per body, when last asked (movableBodies)
   ContactEventTracker events_;
   ContactHistory history_;

@@ -1,14 +1,19 @@
 #pragma once
 // What every stage of one step shares, computed once by World::step and
-// passed down: the step length and gravity. A solver that cuts the step into
+// passed down: the step length, gravity and the world's threads. A solver that cuts the step into
 // substeps derives its SubstepContext from it once per island.
 #include "engine/math.h"
 
 namespace physdbg {
 
+class TaskSystem;
+
 struct StepContext {
   double dt = 1.0 / 60.0;  // s
   Vec3 gravity = Vec3::Zero();
+  // The world's threads; null runs everything on the caller's thread. Work
+  // spread over them must give the same result for any count (task_system.h).
+  const TaskSystem* tasks = nullptr;
 };
 
 // A soft contact's coefficients at one substep length (Box2D v3's "soft
