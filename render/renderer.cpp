@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -18,6 +19,11 @@ namespace physdbg::render {
 namespace {
 
 using Eigen::Vector3d;
+using Clock = std::chrono::steady_clock;
+
+double secondsBetween(Clock::time_point start, Clock::time_point end) {
+  return std::chrono::duration<double>(end - start).count();
+}
 
 constexpr int kMaxDimension = 16384;
 constexpr int kMaxSamples = 16;
@@ -100,11 +106,14 @@ class Renderer::Impl {
   ~Impl() { context_->makeCurrent(); }
 
   Image render(const debugdraw::Frame& frame, const Camera& camera) {
+    const auto start = Clock::now();
     validateCamera(camera);
     const Eigen::Matrix4f viewProjection = viewProjectionMatrix(frame, camera);
     const ScreenMapping screen{viewProjection.cast<double>(), static_cast<double>(options_.width),
                                static_cast<double>(options_.height)};
     const FrameBatches batches = buildFrameBatches(frame, camera.target, &screen);
+    const auto drawStart = Clock::now();
+    timings_.prepareSeconds = secondsBetween(start, drawStart);
     context_->makeCurrent();
     target_.bindForDrawing();
     setUpState();
@@ -113,9 +122,16 @@ class Renderer::Impl {
     drawMarkers(batches, viewProjection);
     drawText(batches);
     meshCache_.endFrame();
+    glFinish();  // llvmpipe rasterises here, so read-back is timed apart
     checkGlError("rendering a frame");
-    return target_.read();
+    const auto readStart = Clock::now();
+    timings_.drawSeconds = secondsBetween(drawStart, readStart);
+    Image image = target_.read();
+    timings_.readBackSeconds = secondsBetween(readStart, Clock::now());
+    return image;
   }
+
+  const RenderTimings& lastTimings() const { return timings_; }
 
   const RendererOptions& options() const { return options_; }
 
@@ -259,6 +275,7 @@ class Renderer::Impl {
   VertexStream lines_, points_, texts_;
   MeshCache meshCache_;
   RenderTarget target_;
+  RenderTimings timings_;
 };
 
 Backend parseBackend(const std::string& name) {
@@ -277,6 +294,8 @@ Renderer::~Renderer() = default;
 Image Renderer::render(const debugdraw::Frame& frame, const Camera& camera) { return impl_->render(frame, camera); }
 
 const RendererOptions& Renderer::options() const { return impl_->options(); }
+
+const RenderTimings& Renderer::lastTimings() const { return impl_->lastTimings(); }
 
 GlIdentity Renderer::glIdentity() const { return impl_->glIdentity(); }
 
