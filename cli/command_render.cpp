@@ -1,6 +1,6 @@
 // physdbg render: simulates a scene, writes its frames as PNGs and, with
 // --video, encodes them with ffmpeg.
-#include <chrono>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -18,15 +18,11 @@
 #include "render/renderer.h"
 #include "reports/child_process.h"
 #include "scenes/scene.h"
-#include "viewer/png_writer_pool.h"
+#include "viewer/frame_pipeline.h"
 #include "viewer/scene_frames.h"
 
 namespace physdbg::cli {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // The image2 demuxer reads '%' as a pattern: a literal one is written "%%".
 std::string escapePercent(const std::string& text) {
@@ -84,6 +80,17 @@ void removeEarlierFrames(const std::string& directory, const FrameRange& frames)
                 directory.c_str());
 }
 
+// Per frame. Physics runs a frame ahead on its own thread and encoding on
+// others, so the stages overlap: wall is what a frame costs.
+void printStageTimes(const viewer::FrameStageTimes& times, const viewer::SceneFrames& frames) {
+  const double perFrame = 1e3 / std::max(1, times.frames);
+  std::printf("per frame: simulate %.3f ms, frame assembly %.3f ms, draw %.3f ms, read-back %.3f ms, PNG encode "
+              "%.3f ms, wall %.3f ms\n",
+              perFrame * frames.simulateSeconds(), perFrame * (frames.drawSeconds() + times.prepare),
+              perFrame * times.draw, perFrame * times.readBack, perFrame * (times.encode + times.write),
+              perFrame * times.wall);
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& args) {
@@ -114,30 +121,19 @@ int runRender(const std::vector<std::string>& args) {
 
   viewer::SceneFrames frames = asUsageError([&] { return viewer::SceneFrames(scene, options); });
   render::Renderer renderer({options.width, options.height, options.samples, readBackend(*parsed)});
-  const viewer::PoolSize pool = viewer::framePoolSize(options.width, options.height);
-  viewer::PngWriterPool writers(pool, "-o");
   ProgressBar progress("render " + scene.name, options.frames.count());
-
-  double drawSeconds = 0;
-  const auto wallStart = Clock::now();
-  for (int index = options.frames.first; index < options.frames.last; ++index) {
-    const debugdraw::RecordedFrame frame = frames.frame(index);
-    const auto start = Clock::now();
-    render::Image image = renderer.render(frame.frame, viewer::toCamera(frame.view));
-    drawSeconds += secondsSince(start);
-    asUsageError([&] { writers.submit(framePath(outputDirectory, index), std::move(image)); });
-    progress.update(index - options.frames.first + 1);
-  }
-  asUsageError([&] { writers.finish(); });
+  viewer::FramePipelineOptions pipeline;
+  pipeline.first = options.frames.first;
+  pipeline.last = options.frames.last;
+  const viewer::FrameStageTimes times = asUsageError([&] {
+    return viewer::runFramePipeline(
+        pipeline, [&](int index) { return frames.frame(index); }, renderer,
+        [&](int index) { return framePath(outputDirectory, index); }, [&](int done) { progress.update(done); });
+  });
   progress.finish();
-  const double wall = secondsSince(wallStart);
-
-  const double count = options.frames.count();
   std::printf("wrote %d frames (%dx%d) to %s\n", options.frames.count(), options.width, options.height,
               outputDirectory.c_str());
-  std::printf("per frame: simulate %.3f ms, draw %.3f ms, PNG encode %.3f ms (on %d worker threads), wall %.3f ms\n",
-              1e3 * frames.simulateSeconds() / count, 1e3 * (frames.drawSeconds() + drawSeconds) / count,
-              1e3 * writers.encodeSeconds() / count, pool.workers, 1e3 * wall / count);
+  printStageTimes(times, frames);
   if (!ffmpeg.empty()) {
     encodeVideo(ffmpeg, outputDirectory, video, 1.0 / (scene.world.dt * options.stepsPerFrame), options.frames);
     std::printf("wrote video %s\n", video.c_str());

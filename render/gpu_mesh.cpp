@@ -36,13 +36,22 @@ InstancedMesh uploadInstancedMesh(const UnitMesh& mesh, GLenum mode) {
 }
 
 void drawInstances(InstancedMesh& mesh, const std::vector<Instance>& instances) {
-  if (instances.empty() || mesh.indexCount == 0) return;
-  glBindVertexArray(mesh.vertexArray.get());
+  uploadInstances(mesh, instances);
+  drawUploadedInstances(mesh);
+}
+
+void uploadInstances(InstancedMesh& mesh, const std::vector<Instance>& instances) {
+  mesh.instanceCount = static_cast<GLsizei>(instances.size());
+  if (instances.empty()) return;
   glBindBuffer(GL_ARRAY_BUFFER, mesh.instances.get());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(instances.size() * sizeof(Instance)), instances.data(),
                GL_STREAM_DRAW);
-  glDrawElementsInstanced(mesh.mode, mesh.indexCount, GL_UNSIGNED_INT, nullptr,
-                          static_cast<GLsizei>(instances.size()));
+}
+
+void drawUploadedInstances(const InstancedMesh& mesh) {
+  if (mesh.instanceCount == 0 || mesh.indexCount == 0) return;
+  glBindVertexArray(mesh.vertexArray.get());
+  glDrawElementsInstanced(mesh.mode, mesh.indexCount, GL_UNSIGNED_INT, nullptr, mesh.instanceCount);
   glBindVertexArray(0);
 }
 

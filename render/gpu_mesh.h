@@ -14,10 +14,14 @@ struct InstancedMesh {
   GlBuffer vertices, indices, instances;
   GLsizei indexCount = 0;
   GLenum mode = GL_TRIANGLES;
+  GLsizei instanceCount = 0;  // uploaded last
 };
 
 InstancedMesh uploadInstancedMesh(const UnitMesh& mesh, GLenum mode);
 // Uploads the instances and draws them all; nothing for an empty list.
 void drawInstances(InstancedMesh& mesh, const std::vector<Instance>& instances);
+// The same in two halves, for drawing one upload several times (outlines).
+void uploadInstances(InstancedMesh& mesh, const std::vector<Instance>& instances);
+void drawUploadedInstances(const InstancedMesh& mesh);
 
 }  // namespace physdbg::render

@@ -18,6 +18,12 @@ struct Image {
 // when the file cannot be written.
 void writePng(const std::string& path, const Image& image, int compressionLevel = 1);
 
+// writePng in two halves, byte for byte the same file: the encoding (no file
+// touched; throws std::invalid_argument as above) and the write (throws
+// std::runtime_error naming the path: a missing folder, a full disk).
+std::vector<std::uint8_t> encodePng(const Image& image, int compressionLevel = 1);
+void writePngBytes(const std::string& path, const std::vector<std::uint8_t>& bytes);
+
 // PNGs come from other people (`physdbg compare`, golden images), so their
 // size is checked from the header before any pixel memory is allocated: at most
 // 16384 pixels a side and 128 Mi pixels (512 MiB as RGBA), which still admits

@@ -2,7 +2,8 @@
 // filter or level) and decoding with its simplified API, which catches
 // libpng's longjmps itself and converts every PNG format to RGBA. For writing,
 // libpng reports errors by longjmp, so the jump target lives in a function
-// that owns nothing.
+// that owns nothing. Encoding goes to memory and the file is written apart,
+// so encoders on several threads can still write their files in frame order.
 #include <png.h>
 
 #include <cerrno>
@@ -34,11 +35,18 @@ struct FileCloser {
   void operator()(std::FILE* file) const { std::fclose(file); }
 };
 
+void appendBytes(png_structp png, png_bytep data, png_size_t length) {
+  auto* bytes = static_cast<std::vector<std::uint8_t>*>(png_get_io_ptr(png));
+  bytes->insert(bytes->end(), data, data + length);
+}
+
+void flushNothing(png_structp) {}
+
 // Returns false after a libpng error; `rows` point into the image.
-bool encode(png_structp png, png_infop info, std::FILE* file, const Image& image, int level,
+bool encode(png_structp png, png_infop info, std::vector<std::uint8_t>& bytes, const Image& image, int level,
             png_bytep* rows) {
   if (setjmp(png_jmpbuf(png))) return false;
-  png_init_io(png, file);
+  png_set_write_fn(png, &bytes, appendBytes, flushNothing);
   png_set_compression_level(png, level);
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
@@ -96,21 +104,35 @@ Image finishRead(png_image& decoder, const std::string& name) {
 
 }  // namespace
 
-void writePng(const std::string& path, const Image& image, int compressionLevel) {
+std::vector<std::uint8_t> encodePng(const Image& image, int compressionLevel) {
   validate(image, compressionLevel);
-  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "wb"));
-  if (!file) throw std::runtime_error("cannot open '" + path + "' for writing: " + std::strerror(errno));
   PngErrorState errorState;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &errorState, onPngError, onPngWarning);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   std::vector<png_bytep> rows(image.height);
   for (int y = 0; y < image.height; ++y)
     rows[y] = const_cast<png_bytep>(image.rgba.data() + static_cast<std::size_t>(y) * image.width * 4);
-  const bool ok = info != nullptr && encode(png, info, file.get(), image, compressionLevel, rows.data());
+  // About 60 KB for a debug frame at 1280x720; one reservation saves the regrowth.
+  std::vector<std::uint8_t> bytes;
+  bytes.reserve(image.rgba.size() / 16 + 1024);
+  const bool ok = info != nullptr && encode(png, info, bytes, image, compressionLevel, rows.data());
   png_destroy_write_struct(&png, &info);
+  if (!ok) throw std::runtime_error(std::string("cannot encode PNG: ") + errorState.message);
+  return bytes;
+}
+
+void writePngBytes(const std::string& path, const std::vector<std::uint8_t>& bytes) {
+  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "wb"));
+  if (!file) throw std::runtime_error("cannot open '" + path + "' for writing: " + std::strerror(errno));
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file.get()) == bytes.size();
+  const int writeError = errno;
   const bool closed = std::fclose(file.release()) == 0;
-  if (!ok) throw std::runtime_error("cannot write PNG '" + path + "': " + errorState.message);
-  if (!closed) throw std::runtime_error("cannot write PNG '" + path + "': close failed");
+  if (!written) throw std::runtime_error("cannot write PNG '" + path + "': " + std::strerror(writeError));
+  if (!closed) throw std::runtime_error("cannot write PNG '" + path + "': close failed: " + std::strerror(errno));
+}
+
+void writePng(const std::string& path, const Image& image, int compressionLevel) {
+  writePngBytes(path, encodePng(image, compressionLevel));
 }
 
 Image readPng(const std::string& path) {

@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -18,6 +19,11 @@ namespace physdbg::render {
 namespace {
 
 using Eigen::Vector3d;
+using Clock = std::chrono::steady_clock;
+
+double secondsBetween(Clock::time_point start, Clock::time_point end) {
+  return std::chrono::duration<double>(end - start).count();
+}
 
 constexpr int kMaxDimension = 16384;
 constexpr int kMaxSamples = 16;
@@ -81,6 +87,7 @@ class Renderer::Impl {
       : options_(options),
         context_(options.backend == Backend::Egl ? createEglContext() : createOsMesaContext()),
         solid_(createProgram(shaders::kSolidVertex, shaders::kSolidFragment, "solid")),
+        flatSolid_(createProgram(shaders::kFlatSolidVertex, shaders::kFlatSolidFragment, "flat solid")),
         wire_(createProgram(shaders::kWireVertex, shaders::kUnlitFragment, "wire")),
         line_(createProgram(shaders::kLineVertex, shaders::kUnlitFragment, "line")),
         point_(createProgram(shaders::kPointVertex, shaders::kPointFragment, "point")),
@@ -100,22 +107,32 @@ class Renderer::Impl {
   ~Impl() { context_->makeCurrent(); }
 
   Image render(const debugdraw::Frame& frame, const Camera& camera) {
+    const auto start = Clock::now();
     validateCamera(camera);
     const Eigen::Matrix4f viewProjection = viewProjectionMatrix(frame, camera);
     const ScreenMapping screen{viewProjection.cast<double>(), static_cast<double>(options_.width),
                                static_cast<double>(options_.height)};
     const FrameBatches batches = buildFrameBatches(frame, camera.target, &screen);
+    const auto drawStart = Clock::now();
+    timings_.prepareSeconds = secondsBetween(start, drawStart);
     context_->makeCurrent();
     target_.bindForDrawing();
     setUpState();
     drawSolids(batches, camera, viewProjection);
     drawOverlays(batches, viewProjection);
-    drawMarkers(batches, viewProjection);
+    drawMarkers(batches, camera, viewProjection);
     drawText(batches);
     meshCache_.endFrame();
+    glFinish();  // llvmpipe rasterises here, so read-back is timed apart
     checkGlError("rendering a frame");
-    return target_.read();
+    const auto readStart = Clock::now();
+    timings_.drawSeconds = secondsBetween(drawStart, readStart);
+    Image image = target_.read();
+    timings_.readBackSeconds = secondsBetween(readStart, Clock::now());
+    return image;
   }
+
+  const RenderTimings& lastTimings() const { return timings_; }
 
   const RendererOptions& options() const { return options_; }
 
@@ -139,6 +156,8 @@ class Renderer::Impl {
     // Alpha stays 1 over the opaque background so PNGs are opaque.
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glEnable(GL_PROGRAM_POINT_SIZE);
+    // Flat normals (the cone's) come from a triangle's first vertex.
+    glProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
   }
 
   Eigen::Matrix4f viewProjectionMatrix(const debugdraw::Frame& frame, const Camera& camera) const {
@@ -204,11 +223,11 @@ class Renderer::Impl {
   // everything (no depth test; depth clamping keeps the ones past the near or
   // far plane), each with a one-pixel dark outline so they read on any body
   // colour. Points first, so the arrows leaving them stay whole.
-  void drawMarkers(const FrameBatches& batches, const Eigen::Matrix4f& viewProjection) {
+  void drawMarkers(const FrameBatches& batches, const Camera& camera, const Eigen::Matrix4f& viewProjection) {
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_DEPTH_CLAMP);
     drawPoints(batches, viewProjection);
-    drawArrows(batches, viewProjection);
+    drawArrows(batches, camera, viewProjection);
     glDisable(GL_DEPTH_CLAMP);
     glEnable(GL_DEPTH_TEST);
   }
@@ -218,26 +237,33 @@ class Renderer::Impl {
     const GLint grow = glGetUniformLocation(point_.get(), "uGrowPixels");
     glUniform1f(grow, 2.0f);  // a one-pixel ring
     setOutline(point_, 0, 0, true);
-    points_.draw(batches.points, GL_POINTS);
+    points_.upload(batches.points);
+    points_.drawUploaded(GL_POINTS);
     glUniform1f(grow, 0.0f);
     setOutline(point_, 0, 0, false);
-    points_.draw(batches.points, GL_POINTS);
+    points_.drawUploaded(GL_POINTS);
   }
 
   // Shifted dark copies, then the arrows; heads are lit cones, culled
-  // to their front faces so a cone never draws over itself.
-  void drawArrows(const FrameBatches& batches, const Eigen::Matrix4f& viewProjection) {
+  // to their front faces so a cone never draws over itself. Shafts and heads
+  // are uploaded once for the five passes.
+  void drawArrows(const FrameBatches& batches, const Camera& camera, const Eigen::Matrix4f& viewProjection) {
     if (batches.arrowShafts.empty()) return;
     glEnable(GL_CULL_FACE);
+    lines_.upload(batches.arrowShafts);
+    uploadInstances(cone_, batches.arrowHeads);
+    useProgram(flatSolid_, viewProjection);
+    const Eigen::Vector3f light = lightDirection(camera);
+    glUniform3fv(glGetUniformLocation(flatSolid_.get(), "uLightDirection"), 1, light.data());
     for (int shift = 0; shift <= kOutlineCopies; ++shift) {
       const bool outline = shift < kOutlineCopies;
       const float x = outline ? kOutlineShifts[shift][0] : 0.0f, y = outline ? kOutlineShifts[shift][1] : 0.0f;
       useProgram(line_, viewProjection);
       setOutline(line_, x, y, outline);
-      lines_.draw(batches.arrowShafts, GL_LINES);
-      useProgram(solid_, viewProjection);
-      setOutline(solid_, x, y, outline);
-      drawInstances(cone_, batches.arrowHeads);
+      lines_.drawUploaded(GL_LINES);
+      useProgram(flatSolid_, viewProjection);
+      setOutline(flatSolid_, x, y, outline);
+      drawUploadedInstances(cone_);
     }
     glDisable(GL_CULL_FACE);
   }
@@ -252,13 +278,14 @@ class Renderer::Impl {
 
   RendererOptions options_;
   std::unique_ptr<GlContext> context_;  // declared first: destroyed after every GL object
-  GlProgram solid_, wire_, line_, point_, text_;
+  GlProgram solid_, flatSolid_, wire_, line_, point_, text_;
   InstancedMesh cube_;
   std::vector<InstancedMesh> spheres_;  // one per detail level
   InstancedMesh cone_, cubeEdges_;
   VertexStream lines_, points_, texts_;
   MeshCache meshCache_;
   RenderTarget target_;
+  RenderTimings timings_;
 };
 
 Backend parseBackend(const std::string& name) {
@@ -277,6 +304,8 @@ Renderer::~Renderer() = default;
 Image Renderer::render(const debugdraw::Frame& frame, const Camera& camera) { return impl_->render(frame, camera); }
 
 const RendererOptions& Renderer::options() const { return impl_->options(); }
+
+const RenderTimings& Renderer::lastTimings() const { return impl_->lastTimings(); }
 
 GlIdentity Renderer::glIdentity() const { return impl_->glIdentity(); }
 

@@ -25,6 +25,13 @@ struct RendererOptions {
   Backend backend = Backend::OsMesa;
 };
 
+// Where the last render() spent its time: flattening the frame into arrays
+// (our CPU work), issuing the draws and waiting for llvmpipe to rasterise
+// them (glFinish), and glReadPixels with the row flip.
+struct RenderTimings {
+  double prepareSeconds = 0, drawSeconds = 0, readBackSeconds = 0;
+};
+
 struct GlIdentity {
   std::string renderer, version;
 };
@@ -43,6 +50,7 @@ class Renderer {
   Image render(const debugdraw::Frame& frame, const Camera& camera);
 
   const RendererOptions& options() const;
+  const RenderTimings& lastTimings() const;
 
   // GL_RENDERER and GL_VERSION of the context, e.g. "llvmpipe (LLVM 15.0.6,
   // 256 bits)" and "4.5 (Core Profile) Mesa 22.3.6": golden images are keyed by them.

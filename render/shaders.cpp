@@ -25,31 +25,36 @@ namespace physdbg::render::shaders {
   "  return vec4(position.xy + uShift * position.w, position.zw);\n"   \
   "}\n"
 
-const char* const kSolidVertex =
-    "#version 330 core\n"
-    "layout(location = 0) in vec4 aPosition;\n"
-    "layout(location = 1) in vec3 aNormal;\n" PHYSDBG_INSTANCE_INPUTS
-    "uniform mat4 uViewProjection;\n" PHYSDBG_OUTLINE_INPUTS
-    "out vec3 vNormal;\n"
-    "out vec4 vColor;\n"
-    "void main() {\n"
-    "  vec3 local = aPosition.xyz * iScale.xyz + vec3(0.0, aPosition.w * iScale.w, 0.0);\n"
-    // Inverse-transpose of a scale is its reciprocal; the floor keeps flat boxes finite.
-    "  vNormal = rotate(iRotation, aNormal / max(iScale.xyz, vec3(1e-30)));\n"
-    "  vColor = outlined(iColor);\n"
-    "  gl_Position = shifted(uViewProjection * vec4(rotate(iRotation, local) + iTranslation, 1.0));\n"
-    "}\n";
+// The solid program, its normal smooth (spheres, capsules) or `flat` (the
+// shared-vertex cone): the same text otherwise, so both compute alike.
+#define PHYSDBG_SOLID_VERTEX(NORMAL_QUALIFIER)                                                             \
+  "#version 330 core\n"                                                                                    \
+  "layout(location = 0) in vec4 aPosition;\n"                                                              \
+  "layout(location = 1) in vec3 aNormal;\n" PHYSDBG_INSTANCE_INPUTS                                        \
+  "uniform mat4 uViewProjection;\n" PHYSDBG_OUTLINE_INPUTS NORMAL_QUALIFIER "out vec3 vNormal;\n"           \
+  "out vec4 vColor;\n"                                                                                     \
+  "void main() {\n"                                                                                        \
+  "  vec3 local = aPosition.xyz * iScale.xyz + vec3(0.0, aPosition.w * iScale.w, 0.0);\n"                  \
+  /* Inverse-transpose of a scale is its reciprocal; the floor keeps flat boxes finite. */                 \
+  "  vNormal = rotate(iRotation, aNormal / max(iScale.xyz, vec3(1e-30)));\n"                               \
+  "  vColor = outlined(iColor);\n"                                                                         \
+  "  gl_Position = shifted(uViewProjection * vec4(rotate(iRotation, local) + iTranslation, 1.0));\n"       \
+  "}\n"
 
-const char* const kSolidFragment =
-    "#version 330 core\n"
-    "in vec3 vNormal;\n"
-    "in vec4 vColor;\n"
-    "uniform vec3 uLightDirection;\n"
-    "out vec4 fragColor;\n"
-    "void main() {\n"
-    "  float lambert = max(dot(normalize(vNormal), uLightDirection), 0.0);\n"
-    "  fragColor = vec4(vColor.rgb * (0.3 + 0.7 * lambert), vColor.a);\n"
-    "}\n";
+#define PHYSDBG_SOLID_FRAGMENT(NORMAL_QUALIFIER)                                  \
+  "#version 330 core\n" NORMAL_QUALIFIER "in vec3 vNormal;\n"                     \
+  "in vec4 vColor;\n"                                                            \
+  "uniform vec3 uLightDirection;\n"                                              \
+  "out vec4 fragColor;\n"                                                        \
+  "void main() {\n"                                                              \
+  "  float lambert = max(dot(normalize(vNormal), uLightDirection), 0.0);\n"      \
+  "  fragColor = vec4(vColor.rgb * (0.3 + 0.7 * lambert), vColor.a);\n"          \
+  "}\n"
+
+const char* const kSolidVertex = PHYSDBG_SOLID_VERTEX("");
+const char* const kSolidFragment = PHYSDBG_SOLID_FRAGMENT("");
+const char* const kFlatSolidVertex = PHYSDBG_SOLID_VERTEX("flat ");
+const char* const kFlatSolidFragment = PHYSDBG_SOLID_FRAGMENT("flat ");
 
 const char* const kWireVertex =
     "#version 330 core\n"
@@ -117,5 +122,7 @@ const char* const kTextVertex =
 
 #undef PHYSDBG_INSTANCE_INPUTS
 #undef PHYSDBG_OUTLINE_INPUTS
+#undef PHYSDBG_SOLID_VERTEX
+#undef PHYSDBG_SOLID_FRAGMENT
 
 }  // namespace physdbg::render::shaders

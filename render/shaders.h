@@ -6,6 +6,9 @@ namespace physdbg::render::shaders {
 // Solids, lines and points take uShift/uOutline to draw a marker's dark outline.
 extern const char* const kSolidVertex;
 extern const char* const kSolidFragment;
+// The same with a `flat` normal, taken from a face's first vertex (the cone).
+extern const char* const kFlatSolidVertex;
+extern const char* const kFlatSolidFragment;
 // Instanced wire boxes: the same instance layout, no lighting.
 extern const char* const kWireVertex;
 // Per-vertex coloured lines.

@@ -20,11 +20,15 @@ void addTriangle(UnitMesh& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t
   mesh.indices.insert(mesh.indices.end(), {a, b, c});
 }
 
+// Degenerate triangles get some normal; they cover no pixels anyway.
+Vector3f faceNormal(const Vector3f& a, const Vector3f& b, const Vector3f& c) {
+  const Vector3f cross = (b - a).cross(c - a);
+  return cross.norm() > 0 ? Vector3f(cross.normalized()) : Vector3f::UnitY();
+}
+
 // Appends a flat triangle with its own three vertices.
 void addFlatTriangle(UnitMesh& mesh, const Vector3f& a, const Vector3f& b, const Vector3f& c) {
-  const Vector3f cross = (b - a).cross(c - a);
-  // Degenerate triangles get some normal; they cover no pixels anyway.
-  const Vector3f normal = cross.norm() > 0 ? Vector3f(cross.normalized()) : Vector3f::UnitY();
+  const Vector3f normal = faceNormal(a, b, c);
   const auto first = static_cast<std::uint32_t>(mesh.vertices.size());
   for (const Vector3f* corner : {&a, &b, &c}) mesh.vertices.push_back(vertex(*corner, normal));
   addTriangle(mesh, first, first + 1, first + 2);
@@ -105,9 +109,23 @@ UnitMesh unitCone(int segments) {
     const double angle = 2.0 * std::numbers::pi * index / segments;
     return Vector3f(static_cast<float>(std::cos(angle)), 0.0f, static_cast<float>(-std::sin(angle)));
   };
+  // Two rings of rim points (rim(segments) is kept apart from rim(0): the same
+  // floats as one triangle per face had), the apex and the base centre.
+  // Side face i is (rim i, rim i+1, apex) with its normal on rim i of the
+  // side ring; base face i is (rim i+1, rim i, centre) with the base normal
+  // on rim i+1 of the base ring.
+  const auto sideRing = static_cast<std::uint32_t>(0), baseRing = static_cast<std::uint32_t>(segments + 1);
+  const auto apexIndex = static_cast<std::uint32_t>(2 * (segments + 1)), centreIndex = apexIndex + 1;
+  for (int index = 0; index <= segments; ++index)
+    mesh.vertices.push_back(vertex(rim(index), faceNormal(rim(index), rim(index + 1), apex)));
+  for (int index = 0; index <= segments; ++index)
+    mesh.vertices.push_back(vertex(rim(index), faceNormal(rim(index), rim(index - 1), Vector3f::Zero())));
+  mesh.vertices.push_back(vertex(apex, Vector3f::UnitY()));
+  mesh.vertices.push_back(vertex(Vector3f::Zero(), -Vector3f::UnitY()));
   for (int index = 0; index < segments; ++index) {
-    addFlatTriangle(mesh, rim(index), rim(index + 1), apex);
-    addFlatTriangle(mesh, rim(index + 1), rim(index), Vector3f::Zero());
+    const auto i = static_cast<std::uint32_t>(index);
+    addTriangle(mesh, sideRing + i, sideRing + i + 1, apexIndex);
+    addTriangle(mesh, baseRing + i + 1, baseRing + i, centreIndex);
   }
   return mesh;
 }

@@ -23,7 +23,12 @@ struct UnitMesh {
 UnitMesh unitCube();                            // [-1,1]^3, flat face normals
 UnitMesh unitCubeEdges();                       // 12 edges of [-1,1]^3 as line pairs
 UnitMesh capsuleSphere(int segments, int rings);  // unit sphere split at the equator
-UnitMesh unitCone(int segments);                // base radius 1 at y=0, apex at y=1
+// Base radius 1 at y=0, apex at y=1, flat shaded with shared vertices: each
+// face's normal is on its first vertex, for a `flat` normal drawn with
+// GL_FIRST_VERTEX_CONVENTION (shaders::kFlatSolidVertex). Arrow heads are
+// drawn five times a frame (four outline copies), and llvmpipe shades every
+// vertex on the drawing thread: 2n+4 vertices instead of 6n, the same triangles.
+UnitMesh unitCone(int segments);
 
 // Flat-shaded copy of a triangle mesh (one normal per face). Throws
 // std::invalid_argument for an index count not a multiple of 3 or an index

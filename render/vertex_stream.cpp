@@ -14,12 +14,17 @@ VertexStream::VertexStream(GLsizei stride, std::initializer_list<FloatAttribute>
   glBindVertexArray(0);
 }
 
-void VertexStream::drawBytes(const void* data, std::size_t bytes, GLsizei count, GLenum mode) {
+void VertexStream::uploadBytes(const void* data, std::size_t bytes, GLsizei count) {
+  count_ = count;
   if (count == 0) return;
-  glBindVertexArray(vertexArray_.get());
   glBindBuffer(GL_ARRAY_BUFFER, buffer_.get());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), data, GL_STREAM_DRAW);
-  glDrawArrays(mode, 0, count);
+}
+
+void VertexStream::drawUploaded(GLenum mode) {
+  if (count_ == 0) return;
+  glBindVertexArray(vertexArray_.get());
+  glDrawArrays(mode, 0, count_);
   glBindVertexArray(0);
 }
 

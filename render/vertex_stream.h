@@ -20,13 +20,22 @@ class VertexStream {
 
   template <typename Vertex>
   void draw(const std::vector<Vertex>& vertices, GLenum mode) {
-    drawBytes(vertices.data(), vertices.size() * sizeof(Vertex), static_cast<GLsizei>(vertices.size()), mode);
+    upload(vertices);
+    drawUploaded(mode);
   }
 
+  // The same in two halves, for drawing one upload several times (outlines).
+  template <typename Vertex>
+  void upload(const std::vector<Vertex>& vertices) {
+    uploadBytes(vertices.data(), vertices.size() * sizeof(Vertex), static_cast<GLsizei>(vertices.size()));
+  }
+  void drawUploaded(GLenum mode);
+
  private:
-  void drawBytes(const void* data, std::size_t bytes, GLsizei count, GLenum mode);
+  void uploadBytes(const void* data, std::size_t bytes, GLsizei count);
   GlVertexArray vertexArray_;
   GlBuffer buffer_;
+  GLsizei count_ = 0;
 };
 
 }  // namespace physdbg::render

@@ -1,10 +1,15 @@
 #pragma once
-// Encodes PNG frames on worker threads while the main thread simulates and
-// draws the next frame: PNG encoding, not drawing, is the bottleneck of a
-// debug video (see shared NOTES). The queue is bounded so memory stays flat.
+// Encodes PNG frames on worker threads while the main thread draws the next
+// frame: PNG encoding is as slow as drawing a debug frame (see shared NOTES).
+// Frames are encoded in parallel but their files are written in the order
+// they were submitted, so after a failure (a full disk, a missing folder)
+// every frame before the failed one is on disk and none after it. The queue
+// is bounded so memory stays flat.
 #include <condition_variable>
+#include <cstdint>
 #include <deque>
 #include <exception>
+#include <map>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -15,7 +20,7 @@
 namespace physdbg::viewer {
 
 struct PoolSize {
-  int workers = 1;
+  int workers = 1;  // 0: submit() encodes and writes on the caller's thread
   std::size_t maxQueued = 2;
 };
 
@@ -23,6 +28,12 @@ struct PoolSize {
 // two frames per core, shortened for large frames so that queued images
 // stay under 1 GiB.
 PoolSize framePoolSize(int width, int height);
+
+// Seconds summed over the workers, and how long submit() waited for room:
+// a drawing thread that waits here is bound by encoding.
+struct PoolTimes {
+  double encodeSeconds = 0, writeSeconds = 0, submitWaitSeconds = 0;
+};
 
 class PngWriterPool {
  public:
@@ -39,26 +50,38 @@ class PngWriterPool {
   // Waits until every submitted frame is written; rethrows a worker's failure.
   void finish();
 
-  double encodeSeconds() const;  // summed over workers
+  PoolTimes times() const;
+  double encodeSeconds() const { return times().encodeSeconds; }
 
  private:
   struct Job {
+    std::uint64_t sequence = 0;
     std::string path;
     render::Image image;
   };
+  struct Encoded {
+    std::string path;
+    std::vector<std::uint8_t> bytes;
+    std::exception_ptr failure;
+  };
   void work();
+  Encoded encode(Job& job);
+  void writeInOrder(std::unique_lock<std::mutex>& lock);
+  std::exception_ptr write(const Encoded& frame);
   void rethrowFailure();
 
   mutable std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<Job> queue_;
+  std::map<std::uint64_t, Encoded> encoded_;  // waiting for the frames before them
+  std::uint64_t submitted_ = 0, written_ = 0;
+  bool writing_ = false;  // one thread writes at a time, in sequence
   std::size_t maxQueued_;
   std::string option_;
-  int busy_ = 0;
   bool stopping_ = false;
   std::exception_ptr failure_;
-  double encodeSeconds_ = 0;
-  std::vector<std::jthread> workers_;
+  PoolTimes times_;
+  std::vector<std::jthread> workers_;  // last: joined before the state above dies
 };
 
 }  // namespace physdbg::viewer

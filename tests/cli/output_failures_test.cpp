@@ -2,6 +2,7 @@
 // with a message naming the option and the path, whichever command it is.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,22 @@ TEST(OutputFailures, ExitTwoNamingTheOptionAndThePath) {
     EXPECT_NE(result.output.find(c.option + ": "), std::string::npos) << c.arguments << "\n" << result.output;
     EXPECT_NE(result.output.find(c.path), std::string::npos) << c.arguments << "\n" << result.output;
   }
+}
+
+// A frame that cannot be written in the middle of a run (here a folder stands
+// where frame 2 belongs; a full disk fails the same way) stops the run with
+// exit 2 naming -o and the file, after the frames before it and none after.
+TEST(OutputFailures, RenderStopsAtTheFirstFrameItCannotWrite) {
+  ScratchFolder folder;
+  const std::string output = folder / "frames";
+  std::filesystem::create_directories(output + "/frame_00002.png");
+  const Result result = runPhysdbg("render default --frames 6 --size 64x48 --no-timing -o " + output);
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  EXPECT_NE(result.output.find("-o: "), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find(output + "/frame_00002.png"), std::string::npos) << result.output;
+  EXPECT_TRUE(std::filesystem::is_regular_file(output + "/frame_00001.png"));
+  for (const char* later : {"/frame_00003.png", "/frame_00004.png", "/frame_00005.png"})
+    EXPECT_FALSE(std::filesystem::exists(output + later)) << later;
 }
 
 }  // namespace

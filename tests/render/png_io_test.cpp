@@ -52,6 +52,27 @@ TEST(PngIo, UnwritablePathThrowsNamingThePath) {
   }
 }
 
+// The encoder pool encodes in memory and writes the bytes in frame order:
+// the same file writePng makes.
+TEST(PngIo, EncodedBytesAreTheFileWritePngMakes) {
+  const Image image = randomImage(64, 48, 3);
+  const std::string path = temporaryPath("encoded.png");
+  writePng(path, image);
+  std::ifstream file(path, std::ios::binary);
+  const std::vector<std::uint8_t> written{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+  EXPECT_EQ(encodePng(image), written);
+  std::filesystem::remove(path);
+}
+
+TEST(PngIo, AFullDiskFailsTheWriteNamingThePath) {
+  try {
+    writePngBytes("/dev/full", encodePng(randomImage(64, 48, 3)));
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("'/dev/full'"), std::string::npos) << error.what();
+  }
+}
+
 TEST(PngIo, MissingFileThrowsNamingThePath) {
   const std::string path = temporaryPath("does_not_exist.png");
   try {

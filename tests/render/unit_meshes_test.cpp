@@ -66,6 +66,21 @@ TEST(UnitMeshes, ConeAndEdgesHaveTheExpectedShape) {
     EXPECT_FLOAT_EQ((position(edges.vertices[edges.indices[first]]) - position(edges.vertices[edges.indices[first + 1]])).norm(), 2.0f);
 }
 
+// The cone shares its vertices; each face's normal rides on its first vertex
+// (drawn with a flat normal and GL_FIRST_VERTEX_CONVENTION).
+TEST(UnitMeshes, ConeFacesCarryTheirNormalOnTheirFirstVertex) {
+  const UnitMesh cone = unitCone(16);
+  EXPECT_EQ(cone.vertices.size(), 2u * 17u + 2u);
+  ASSERT_EQ(cone.indices.size(), 16u * 2u * 3u);
+  for (std::size_t first = 0; first < cone.indices.size(); first += 3) {
+    const Vector3f a = position(cone.vertices[cone.indices[first]]);
+    const Vector3f b = position(cone.vertices[cone.indices[first + 1]]);
+    const Vector3f c = position(cone.vertices[cone.indices[first + 2]]);
+    const Vector3f face = (b - a).cross(c - a).normalized();
+    EXPECT_LT((normal(cone.vertices[cone.indices[first]]) - face).norm(), 1e-6f) << "triangle " << first / 3;
+  }
+}
+
 TEST(UnitMeshes, FlatShadedMeshValidatesIndices) {
   debugdraw::TriangleMesh mesh;
   mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
