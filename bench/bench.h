@@ -18,6 +18,9 @@ struct BenchOptions {
   // physdbg's contact solver in the scene benchmarks, overriding each scene's
   // (`physdbg bench --solver`); the seed bench then runs only this one.
   std::optional<SolverKind> solver;
+  // physdbg's threads in the scene benchmarks (`physdbg bench --threads`, 0
+  // every core). Without it they run twice: one thread and every core.
+  std::optional<int> threads;
 };
 
 

@@ -19,23 +19,31 @@ int countEscaped(const EngineRun& run, const DropScene& drop) {
   return escaped;
 }
 
+// One row per thread count (side_by_side.h), each against the same
+// single-threaded Bullet run.
 void runDrop(int count, DropShape shape, int steps, const BenchOptions& options, const BenchSink& sink) {
   const DropScene drop = dropScene(count, shape);
-  const EngineRun ours = runOurs(drop.scene, steps, options);
   const EngineRun peer = runBullet(drop.scene, steps, false);
-  nlohmann::json record = benchRecord(std::string("drop/") + (shape == DropShape::Sphere ? "spheres" : "boxes"), count,
-                                      ours.msPerStep, peer.ran ? "bullet 3.24 btDbvt+SI(10)" : "", peer.msPerStep);
-  record["solver"] = solverKindName(options.solver.value_or(drop.scene.world.solver.kind));
-  record["steps"] = steps;
-  record["dt"] = drop.scene.world.dt;
-  record["sleeping"] = false;
-  record["ours_final_kinetic_energy"] = ours.kineticEnergy;
-  record["ours_left_container"] = countEscaped(ours, drop);
-  if (peer.ran) {
-    record["peer_final_kinetic_energy"] = peer.kineticEnergy;
-    record["peer_left_container"] = countEscaped(peer, drop);
+  std::optional<double> singleThreadMs;
+  for (const int threads : benchThreadCounts(options)) {
+    const EngineRun ours = runOurs(drop.scene, steps, options, threads);
+    nlohmann::json record = benchRecord(std::string("drop/") + (shape == DropShape::Sphere ? "spheres" : "boxes"),
+                                        count, ours.msPerStep, peer.ran ? "bullet 3.24 btDbvt+SI(10)" : "",
+                                        peer.msPerStep);
+    addThreadFields(record, threads, ours.msPerStep, singleThreadMs);
+    if (threads == 1) singleThreadMs = ours.msPerStep;
+    record["solver"] = solverKindName(options.solver.value_or(drop.scene.world.solver.kind));
+    record["steps"] = steps;
+    record["dt"] = drop.scene.world.dt;
+    record["sleeping"] = false;
+    record["ours_final_kinetic_energy"] = ours.kineticEnergy;
+    record["ours_left_container"] = countEscaped(ours, drop);
+    if (peer.ran) {
+      record["peer_final_kinetic_energy"] = peer.kineticEnergy;
+      record["peer_left_container"] = countEscaped(peer, drop);
+    }
+    sink(record);
   }
-  sink(record);
 }
 
 void runDropBenchmark(const BenchOptions& options, const BenchSink& sink) {

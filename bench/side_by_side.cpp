@@ -4,6 +4,9 @@
 #include <chrono>
 
 #include "bench/bullet_world.h"
+#include "engine/parallel/task_system.h"
+
+#include <nlohmann/json.hpp>
 
 namespace physdbg::bench {
 namespace {
@@ -17,8 +20,9 @@ double millisecondsPerStep(int steps, Step&& step) {
 
 }  // namespace
 
-EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options) {
+EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options, int threads) {
   if (options.solver) scene.world.solver.kind = *options.solver;
+  scene.world.threads = threads;
   World world = buildWorld(scene);
   EngineRun run;
   for (const RigidBody& body : world.bodies()) run.startPositions.push_back(body.position());
@@ -41,6 +45,17 @@ EngineRun runBullet(const SceneDescription& scene, int steps, bool allowSleep) {
   run.kineticEnergy = world.kineticEnergy();
   run.ran = true;
   return run;
+}
+
+std::vector<int> benchThreadCounts(const BenchOptions& options) {
+  const int everyCore = TaskSystem::hardwareThreads();
+  if (options.threads) return {*options.threads == 0 ? everyCore : *options.threads};
+  return everyCore > 1 ? std::vector<int>{1, everyCore} : std::vector<int>{1};
+}
+
+void addThreadFields(nlohmann::json& record, int threads, double msPerStep, std::optional<double> singleThreadMs) {
+  record["threads"] = threads;
+  if (threads > 1 && singleThreadMs && msPerStep > 0.0) record["scaling"] = *singleThreadMs / msPerStep;
 }
 
 double largestDisplacement(const EngineRun& run) {

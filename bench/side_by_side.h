@@ -2,7 +2,10 @@
 // Runs one scene in physdbg and in Bullet for the same number of steps and
 // keeps what the scene benchmarks compare: time per step, final kinetic
 // energy and final positions (in scene body order).
+#include <optional>
 #include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "bench/bench.h"
 #include "scenes/scene.h"
@@ -16,9 +19,19 @@ struct EngineRun {
   std::vector<Vec3> startPositions, finalPositions;
 };
 
-// With options.solver, physdbg runs the scene under that solver.
-EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options);
+// With options.solver, physdbg runs the scene under that solver, on
+// `threads` threads (0 every core).
+EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options, int threads);
 EngineRun runBullet(const SceneDescription& scene, int steps, bool allowSleep);
+
+// The thread counts a scene benchmark runs physdbg on: options.threads alone
+// when given (0 read as every core), else 1 and every core (just 1 on a
+// one-core machine). Bullet runs once, single-threaded, as it is built.
+std::vector<int> benchThreadCounts(const BenchOptions& options);
+
+// Sets the record's "threads" and, after the single-thread run, "scaling":
+// that run's time over this one's (2 = twice as fast on `threads` threads).
+void addThreadFields(nlohmann::json& record, int threads, double msPerStep, std::optional<double> singleThreadMs);
 
 // Largest distance a body moved between the start and the end.
 double largestDisplacement(const EngineRun& run);

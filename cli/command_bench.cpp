@@ -21,8 +21,9 @@ std::string formatNumber(const nlohmann::json& value) {
 }
 
 void printRow(const nlohmann::json& record) {
-  std::printf("%-34s %8s %12s %-22s %12s %8s\n", formatNumber(record["name"]).c_str(),
-              formatNumber(record["n"]).c_str(), formatNumber(record["ours_ms"]).c_str(),
+  std::printf("%-34s %8s %7s %12s %-22s %12s %8s\n", formatNumber(record["name"]).c_str(),
+              formatNumber(record["n"]).c_str(), formatNumber(record.value("threads", nlohmann::json())).c_str(),
+              formatNumber(record["ours_ms"]).c_str(),
               formatNumber(record["peer"]).c_str(), formatNumber(record["peer_ms"]).c_str(),
               formatNumber(record["ratio"]).c_str());
   std::fflush(stdout);
@@ -34,13 +35,16 @@ int runBench(const std::vector<std::string>& args) {
   std::string names;
   for (const auto& benchmark : bench::allBenchmarks()) names += "\n  " + benchmark.name + ": " + benchmark.description;
   const CommandSpec spec{"bench",
-                         "[NAME] [--json] [--quick] [--solver seed|sequential_impulse]",
+                         "[NAME] [--json] [--quick] [--solver seed|sequential_impulse] [--threads N]",
                          "Runs the benchmark NAME, or all of them, each side by side with its peer engine in the same "
                          "run.\nratio = ours / peer: below 1 means physdbg is faster. Benchmarks:" + names,
                          {{"--json", "", "", "print one JSON object per line instead of a table"},
                           {"--quick", "", "", "small sizes (a smoke test, not a measurement)"},
                           {"--solver", "", "seed|sequential_impulse",
-                           "physdbg's contact solver in the scene benchmarks (drop, pyramid; seed runs only it)"}},
+                           "physdbg's contact solver in the scene benchmarks (drop, pyramid; seed runs only it)"},
+                          {"--threads", "", "N",
+                           "physdbg's threads in the scene benchmarks (drop, pyramid): N alone (0 every core); by "
+                           "default one row on 1 thread and one on every core, each with its ratio to Bullet"}},
                          0,
                          1};
   const auto parsed = Arguments::parse(spec, args);
@@ -52,11 +56,13 @@ int runBench(const std::vector<std::string>& args) {
   }
   if (selected.empty()) throw UsageError("unknown benchmark '" + wanted + "'; available:" + names);
   const bool json = parsed->has("--json");
-  if (!json) printRow({{"name", "name"}, {"n", "n"}, {"ours_ms", "ours_ms"}, {"peer", "peer"}, {"peer_ms", "peer_ms"},
-                       {"ratio", "ratio"}});
+  if (!json)
+    printRow({{"name", "name"}, {"n", "n"}, {"threads", "threads"}, {"ours_ms", "ours_ms"}, {"peer", "peer"},
+              {"peer_ms", "peer_ms"}, {"ratio", "ratio"}});
   bench::BenchOptions options;
   options.quick = parsed->has("--quick");
   options.solver = readSolverKind(*parsed);
+  options.threads = readThreads(*parsed);
   for (const auto& benchmark : selected) {
     benchmark.run(options, [&](const nlohmann::json& record) {
       if (json) {

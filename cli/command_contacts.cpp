@@ -5,6 +5,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/common_options.h"
 #include "cli/overlapping_pairs.h"
 #include "engine/narrowphase/narrow_phase.h"
 #include "scenes/scene.h"
@@ -20,16 +21,17 @@ nlohmann::json vectorJson(const Vec3& v) { return nlohmann::json::array({v.x(), 
 // pairs included: this is for inspecting a configuration, so nothing is
 // skipped. Pairs come sorted by (a, b) from the box tree (overlapping_pairs.h).
 int runContacts(const std::vector<std::string>& args) {
-  const CommandSpec spec{"contacts",
+  CommandSpec spec{"contacts",
                          "SCENE [--json]",
                          "Prints every touching or overlapping pair of SCENE's initial state: normal (from a to b), "
                          "depth,\nand the contact point on each body (world frame).",
                          {{"--json", "", "", "print a JSON array of {a, b, status, normal, depth, point_a, point_b}"}},
                          1,
                          1};
+  addOptions(spec, {OptionGroup::Threads});
   const auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
-  const SceneDescription scene = resolveScene(parsed->positional()[0]);
+  const SceneDescription scene = readScene(*parsed);
   const World world = buildWorld(scene);
   std::vector<Aabb> boxes;
   boxes.reserve(world.bodyCount());

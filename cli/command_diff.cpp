@@ -27,6 +27,7 @@ constexpr char defaultDiffLayers[] = "shapes,contacts,velocities,overlay";
 SceneDescription runScene(const Arguments& parsed, const std::string& side, const std::string& sceneOption) {
   SceneDescription scene = resolveScene(parsed.value(sceneOption));
   if (const std::optional<SolverKind> kind = readSolverKind(parsed, "--solver-" + side)) scene.world.solver.kind = *kind;
+  if (const std::optional<int> threads = readThreads(parsed)) scene.world.threads = *threads;
   return scene;
 }
 
@@ -83,12 +84,12 @@ int runDiff(const std::vector<std::string>& args) {
        {"--layers", "", "LIST", std::string("debug layers of the pictures (default ") + defaultDiffLayers + ")"}},
       2,
       2};
-  addOptions(spec, {OptionGroup::Backend});
+  addOptions(spec, {OptionGroup::Backend, OptionGroup::Threads});
   const auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const double tolerance =
       numberOption(*parsed, "--tolerance", 0.0, 0.0, std::numeric_limits<double>::max());
-  for (const char* option : {"--scene-b", "--solver-a", "--solver-b", "--output", "--size", "--layers"})
+  for (const char* option : {"--scene-b", "--solver-a", "--solver-b", "--output", "--size", "--layers", "--threads"})
     if (parsed->has(option) && !parsed->has("--scene-a"))
       throw UsageError(std::string(option) + " draws the runs: it needs --scene-a");
   std::string output;

@@ -40,7 +40,7 @@ int runRecord(const std::vector<std::string>& args) {
       1,
       1};
   addOptions(spec, {OptionGroup::SceneFrames, OptionGroup::ImageSize, OptionGroup::SceneLayers, OptionGroup::Camera,
-                    OptionGroup::Solver});
+                    OptionGroup::Solver, OptionGroup::Threads});
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const std::string path = requiredOutput(*parsed, "FILE");

@@ -108,7 +108,7 @@ int runRender(const std::vector<std::string>& args) {
       1,
       1};
   addOptions(spec, {OptionGroup::SceneFrames, OptionGroup::ImageSize, OptionGroup::SceneLayers, OptionGroup::Focus,
-                    OptionGroup::Camera, OptionGroup::Backend, OptionGroup::Solver});
+                    OptionGroup::Camera, OptionGroup::Backend, OptionGroup::Solver, OptionGroup::Threads});
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const SceneDescription scene = readScene(*parsed);

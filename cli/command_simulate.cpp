@@ -86,7 +86,7 @@ int runSimulate(const std::vector<std::string>& args) {
        {"--events", "", "", "print contact events: 'step N begin|stay|end A B'"}},
       1,
       1};
-  addOptions(spec, {OptionGroup::RunSteps, OptionGroup::Solver});
+  addOptions(spec, {OptionGroup::RunSteps, OptionGroup::Solver, OptionGroup::Threads});
   const auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const SceneDescription scene = readScene(*parsed);
@@ -127,7 +127,8 @@ int runSimulate(const std::vector<std::string>& args) {
   }
   std::printf("scene %s: %zu bodies, %d steps of %.6g s (%.4g s simulated)\n", scene.name.c_str(), world.bodyCount(),
               steps, scene.world.dt, world.time());
-  std::printf("step time %.4f ms (mean), final kinetic energy %.6g J\n", 1e3 * stepSeconds / steps, kineticEnergy);
+  std::printf("step time %.4f ms (mean) on %d thread%s, final kinetic energy %.6g J\n", 1e3 * stepSeconds / steps,
+              world.threadCount(), world.threadCount() == 1 ? "" : "s", kineticEnergy);
   const StepStats& stats = world.lastStepStats();
   std::printf("last step: %d awake (%d with axis locks), %d sleeping, %d candidate pairs, %d contacts, %d manifold "
               "points, largest penetration %.4g m; narrow phase: %lld fast path, %lld GJK, %lld EPA\n",

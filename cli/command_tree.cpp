@@ -95,7 +95,8 @@ int runTree(const std::vector<std::string>& args) {
        {"--margin", "", "M", "fat-box margin of the tree (default 0.1)"}},
       1,
       1};
-  addOptions(spec, {OptionGroup::PanelSize, OptionGroup::TreeSteps, OptionGroup::Backend, OptionGroup::Solver});
+  addOptions(spec, {OptionGroup::PanelSize, OptionGroup::TreeSteps, OptionGroup::Backend, OptionGroup::Solver,
+                    OptionGroup::Threads});
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const SceneDescription scene = readScene(*parsed);

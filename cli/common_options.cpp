@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cli/limits.h"
+#include "scenes/scene_limits.h"
 
 namespace physdbg::cli {
 namespace {
@@ -88,6 +89,10 @@ std::vector<OptionSpec> optionRows(OptionGroup group) {
     case OptionGroup::Solver:
       return {{"--solver", "", "seed|sequential_impulse",
                "contact solver, overriding the scene's: the design's one-point response, or sequential impulses"}};
+    case OptionGroup::Threads:
+      return {{"--threads", "", "N",
+               "threads each step may use, overriding the scene's: 0 one per core (the default), 1 none spawned; "
+               "results are bit-identical for every N"}};
   }
   return {};
 }
@@ -107,9 +112,15 @@ std::optional<SolverKind> readSolverKind(const Arguments& arguments, const std::
   throw UsageError(option + ": expected seed or sequential_impulse, got '" + name + "'");
 }
 
+std::optional<int> readThreads(const Arguments& arguments) {
+  if (!arguments.has("--threads")) return std::nullopt;
+  return parseIndex(arguments.value("--threads"), "--threads", arguments.value("--threads"), scene_limits::maxThreads);
+}
+
 SceneDescription readScene(const Arguments& arguments) {
   SceneDescription scene = resolveScene(arguments.positional()[0]);
   if (const std::optional<SolverKind> kind = readSolverKind(arguments)) scene.world.solver.kind = *kind;
+  if (const std::optional<int> threads = readThreads(arguments)) scene.world.threads = *threads;
   return scene;
 }
 

@@ -38,6 +38,7 @@ enum class OptionGroup {
   RunSteps,        // --steps (default the scene's steps)
   TreeSteps,       // --steps after the insertions (default none)
   Solver,          // --solver seed|sequential_impulse (default the scene's)
+  Threads,         // --threads N (default the scene's, else every core)
 };
 
 // The --size defaults: a frame, and each of the tree's two panels.
@@ -73,8 +74,10 @@ void readTreeDepth(const Arguments& arguments, ViewOptions& options, const std::
 CameraOptions readCameraOptions(const Arguments& arguments);
 // --solver (or another option naming a solver kind), when given.
 std::optional<SolverKind> readSolverKind(const Arguments& arguments, const std::string& option = "--solver");
+// --threads N (0..scene_limits::maxThreads; 0 one per core), when given.
+std::optional<int> readThreads(const Arguments& arguments);
 // The scene named by the first positional argument (a built-in name or a
-// file), with --solver, when given, overriding the scene's solver kind.
+// file), with --solver and --threads, when given, overriding the scene's.
 SceneDescription readScene(const Arguments& arguments);
 // --highlight A,B,...: distinct body indices, at most limits::maxHighlighted.
 std::vector<int> readHighlight(const Arguments& arguments);

@@ -14,11 +14,18 @@
 namespace physdbg {
 namespace {
 
-std::unique_ptr<BroadPhase> makeBroadPhase(const WorldSettings& settings) {
+// Indices per piece of a parallel loop: enough work that a piece outweighs
+// handing it to a thread (a pair test is ~1 us, a body's prediction ~0.1 us).
+constexpr std::size_t pairGrain = 32;
+constexpr std::size_t bodyGrain = 256;
+constexpr std::size_t staticRowGrain = 8;  // a row is up to n overlap tests
+
+std::unique_ptr<BroadPhase> makeBroadPhase(const WorldSettings& settings, const TaskSystem& tasks) {
   if (settings.broadPhase == BroadPhaseKind::BruteForce) {
     BruteForceOptions options;
     options.margin = settings.fatMargin;
     options.checkBothOrders = settings.bruteForceBothOrders;
+    options.tasks = &tasks;
     return std::make_unique<BruteForceBroadPhase>(options);
   }
   DynamicAabbTreeOptions options;
@@ -32,9 +39,9 @@ std::unique_ptr<BroadPhase> makeBroadPhase(const WorldSettings& settings) {
 
 World::World(const WorldSettings& settings)
     : settings_(settings),
-      broadPhase_(makeBroadPhase(settings)),
-      solver_(makeContactSolver(settings.solver, settings.narrowPhase)),
-      tasks_(std::make_unique<TaskSystem>(settings.threads)) {
+      tasks_(std::make_unique<TaskSystem>(settings.threads)),
+      broadPhase_(makeBroadPhase(settings, *tasks_)),
+      solver_(makeContactSolver(settings.solver, settings.narrowPhase)) {
   if (!(settings.dt > 0.0) || !std::isfinite(settings.dt)) throw std::invalid_argument("dt must be positive");
   if (!isFinite(settings.gravity)) throw std::invalid_argument("gravity must be finite");
   if (!(settings.fatMargin >= 0.0)) throw std::invalid_argument("fat margin must not be negative");
@@ -59,6 +66,8 @@ BodyId World::addBody(const BodyDefinition& definition) {
   island_.push_back(id);
   return id;
 }
+
+int World::threadCount() const { return tasks_->threadCount(); }
 
 const DynamicAabbTree* World::tree() const {
   const auto* tree = dynamic_cast<const TreeBroadPhase*>(broadPhase_.get());
@@ -188,12 +197,16 @@ const std::vector<bool>& World::movableBodies() {
   return movable_;
 }
 
+// Each moving body's box is predicted in parallel; the broad phase's edits
+// stay serial, in body order, so the tree is the same for any thread count.
 void World::updateBroadPhase(const StepContext& context) {
-  for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (!isMoving(id)) continue;
-    const PredictedMotion motion = solver_->predictMotion(bodies_[id], context);
-    broadPhase_->moveProxy(proxies_[id], motion.box, motion.displacement);
-  }
+  predictions_.resize(bodies_.size());
+  tasks_->parallelFor(bodies_.size(), bodyGrain, [&](std::size_t begin, std::size_t end) {
+    for (auto id = static_cast<BodyId>(begin); id < end; ++id)
+      if (isMoving(id)) predictions_[id] = solver_->predictMotion(bodies_[id], context);
+  });
+  for (BodyId id = 0; id < bodies_.size(); ++id)
+    if (isMoving(id)) broadPhase_->moveProxy(proxies_[id], predictions_[id].box, predictions_[id].displacement);
 }
 
 void World::findContacts(const StepContext& context) {
@@ -202,49 +215,96 @@ void World::findContacts(const StepContext& context) {
   stats_.candidatePairs = static_cast<int>(pairs_.size());
   contacts_.clear();
   solver_->clearContacts();
-  const double touchingGap = solver_->touchingGap();
-  for (const BodyPair& pair : pairs_) {
-    const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
-    if (!a.isDynamic() && !b.isDynamic()) continue;  // a kinematic body passes through static ones
-    // Fat boxes overlap long before the shapes can touch: when even the tight
-    // boxes, grown by how far the pair can close this step, stay apart, the
-    // narrow phase has nothing to say.
-    const double reach = solver_->contactReach(a, b, context);
-    if (!a.collider().worldBounds(a.transform()).enlarged(reach).overlaps(b.collider().worldBounds(b.transform()))) {
-      ++stats_.boundsRejected;
-      continue;
-    }
-    const Contact contact{pair.a, pair.b,
-                          collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase)};
-    stats_.narrowPhase.add(contact.result);
-    // The design's brute force ran the narrow phase for B-A too; it responded
-    // once per pair, so that second answer is counted and dropped.
-    if (settings_.bruteForceBothOrders)
-      stats_.narrowPhase.add(collide(b.collider(), b.transform(), a.collider(), a.transform(), settings_.narrowPhase));
-    stats_.manifoldPoints += solver_->addCandidate(contact, a, b, reach);
-    if (contact.result.status == ContactStatus::Separated && contact.result.distance > touchingGap) continue;
-    contacts_.push_back(contact);
-  }
+  testPairs(context);
+  gatherContacts(context);
   stats_.manifolds = static_cast<int>(solver_->manifolds().size());
   if (!settings_.skipStaticPairs) testStaticPairs();
   stats_.contacts = static_cast<int>(contacts_.size());
 }
 
+World::PairTest World::testPair(const BodyPair& pair, const StepContext& context) const {
+  PairTest test;
+  const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
+  if (!a.isDynamic() && !b.isDynamic()) return test;  // a kinematic body passes through static ones
+  // Fat boxes overlap long before the shapes can touch: when even the tight
+  // boxes, grown by how far the pair can close this step, stay apart, the
+  // narrow phase has nothing to say.
+  test.reach = solver_->contactReach(a, b, context);
+  if (!a.collider().worldBounds(a.transform()).enlarged(test.reach).overlaps(b.collider().worldBounds(b.transform()))) {
+    test.outcome = PairTest::Outcome::BoundsRejected;
+    return test;
+  }
+  test.outcome = PairTest::Outcome::Tested;
+  test.result = collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase);
+  // The design's brute force ran the narrow phase for B-A too; it responded
+  // once per pair, so that second answer is only counted (gatherContacts).
+  if (settings_.bruteForceBothOrders)
+    test.reversed = collide(b.collider(), b.transform(), a.collider(), a.transform(), settings_.narrowPhase);
+  return test;
+}
+
+void World::testPairs(const StepContext& context) {
+  pairTests_.resize(pairs_.size());
+  tasks_->parallelFor(pairs_.size(), pairGrain, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) pairTests_[i] = testPair(pairs_[i], context);
+  });
+}
+
+// In pair order: the counters, the candidates the solver turns into
+// manifolds (all at once, so it can build them in parallel) and the touching
+// contacts.
+void World::gatherContacts(const StepContext& context) {
+  const double touchingGap = solver_->touchingGap();
+  candidates_.clear();
+  reaches_.clear();
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    const PairTest& test = pairTests_[i];
+    if (test.outcome == PairTest::Outcome::Skipped) continue;
+    if (test.outcome == PairTest::Outcome::BoundsRejected) {
+      ++stats_.boundsRejected;
+      continue;
+    }
+    const Contact contact{pairs_[i].a, pairs_[i].b, test.result};
+    stats_.narrowPhase.add(contact.result);
+    if (settings_.bruteForceBothOrders) stats_.narrowPhase.add(test.reversed);
+    candidates_.push_back(contact);
+    reaches_.push_back(test.reach);
+    if (contact.result.status == ContactStatus::Separated && contact.result.distance > touchingGap) continue;
+    contacts_.push_back(contact);
+  }
+  stats_.manifoldPoints += solver_->addCandidates(candidates_, reaches_, bodies_, context);
+}
+
 // The design's baseline without static-pair skipping: pairs of bodies that
 // cannot move still cost an overlap test and, when their boxes overlap, a
-// narrow-phase test whose answer nobody uses.
+// narrow-phase test whose answer nobody uses. Rows (the lower body of each
+// pair) run in parallel; their counts are summed after, in row order.
 void World::testStaticPairs() {
-  for (BodyId i = 0; i < bodies_.size(); ++i) {
-    if (!bodies_[i].isStatic() || !present_[i]) continue;
-    const Aabb boxI = bodies_[i].collider().worldBounds(bodies_[i].transform());
-    for (BodyId j = i + 1; j < bodies_.size(); ++j) {
-      if (!bodies_[j].isStatic() || !present_[j]) continue;
-      ++stats_.staticPairsTested;
-      if (!boxI.overlaps(bodies_[j].collider().worldBounds(bodies_[j].transform()))) continue;
-      stats_.narrowPhase.add(collide(bodies_[i].collider(), bodies_[i].transform(), bodies_[j].collider(),
-                                     bodies_[j].transform(), settings_.narrowPhase));
-    }
+  staticRows_.assign(bodies_.size(), StaticRowCounts{});
+  tasks_->parallelFor(bodies_.size(), staticRowGrain, [&](std::size_t begin, std::size_t end) {
+    for (auto id = static_cast<BodyId>(begin); id < end; ++id) staticRows_[id] = testStaticRow(id);
+  });
+  for (const StaticRowCounts& row : staticRows_) {
+    stats_.staticPairsTested += row.tested;
+    stats_.narrowPhase.pairs += row.narrowPhase.pairs;
+    stats_.narrowPhase.fastPath += row.narrowPhase.fastPath;
+    stats_.narrowPhase.gjk += row.narrowPhase.gjk;
+    stats_.narrowPhase.epa += row.narrowPhase.epa;
   }
+}
+
+World::StaticRowCounts World::testStaticRow(BodyId i) const {
+  StaticRowCounts counts;
+  if (!bodies_[i].isStatic() || !present_[i]) return counts;
+  const Aabb boxI = bodies_[i].collider().worldBounds(bodies_[i].transform());
+  for (BodyId j = i + 1; j < bodies_.size(); ++j) {
+    if (!bodies_[j].isStatic() || !present_[j]) continue;
+    ++counts.tested;
+    if (!boxI.overlaps(bodies_[j].collider().worldBounds(bodies_[j].transform()))) continue;
+    counts.narrowPhase.add(collide(bodies_[i].collider(), bodies_[i].transform(), bodies_[j].collider(),
+                                   bodies_[j].transform(), settings_.narrowPhase));
+  }
+  return counts;
 }
 
 // A sleeping body touched by an awake one wakes before the response, so the

@@ -122,6 +122,8 @@ class World {
   const std::vector<RigidBody>& bodies() const { return bodies_; }
 
   const WorldSettings& settings() const { return settings_; }
+  // The threads a step uses: settings().threads, or the machine's for 0.
+  int threadCount() const;
   int stepCount() const { return stepCount_; }
   double time() const { return stepCount_ * settings_.dt; }
 
@@ -202,7 +204,25 @@ class World {
   const std::vector<bool>& movableBodies();
   void updateBroadPhase(const StepContext& context);
   void findContacts(const StepContext& context);
+  // One candidate pair's narrow-phase answer. Pairs are tested in parallel,
+  // each into its own slot, then gathered in pair order (gatherContacts), so
+  // contacts, manifolds and counters come out as a serial pass makes them.
+  struct PairTest {
+    enum class Outcome { Skipped, BoundsRejected, Tested };
+    Outcome outcome = Outcome::Skipped;
+    double reach = 0.0;
+    ContactResult result;
+    ContactResult reversed;  // B-A, tested only with bruteForceBothOrders
+  };
+  PairTest testPair(const BodyPair& pair, const StepContext& context) const;
+  void testPairs(const StepContext& context);
+  void gatherContacts(const StepContext& context);
   void testStaticPairs();
+  struct StaticRowCounts {  // one body's static pairs with higher ids (testStaticPairs)
+    int tested = 0;
+    NarrowPhaseCounters narrowPhase;
+  };
+  StaticRowCounts testStaticRow(BodyId id) const;
   bool wakeTouchedBodies();  // true when a body woke
   void solveContacts(const StepContext& context);
   std::vector<BodyPair> dormantPairs() const;
@@ -233,11 +253,16 @@ class World {
   std::vector<bool> frozen_, asleep_, present_;
   std::vector<double> slowTime_;  // seconds spent below the sleep speeds
   std::vector<BodyId> island_;    // lowest id of the body's island (see islandOf)
+  std::unique_ptr<TaskSystem> tasks_;  // before broadPhase_, which may hold a pointer to it
   std::unique_ptr<BroadPhase> broadPhase_;
   std::vector<BodyPair> pairs_;
+  std::vector<PairTest> pairTests_;          // per candidate pair, this pass (testPairs)
+  std::vector<Contact> candidates_;          // tested pairs, for the solver (gatherContacts)
+  std::vector<double> reaches_;              // their contactReach
+  std::vector<PredictedMotion> predictions_;  // per body, this step (updateBroadPhase)
+  std::vector<StaticRowCounts> staticRows_;   // per body, this pass (testStaticPairs)
   std::vector<Contact> contacts_;  // this step's touching pairs
   std::unique_ptr<ContactSolver> solver_;
-  std::unique_ptr<TaskSystem> tasks_;
   std::vector<bool> movable_;  // isMoving, per body, when last asked (movableBodies)
   ContactEventTracker events_;
   ContactHistory history_;

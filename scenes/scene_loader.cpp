@@ -303,6 +303,8 @@ void readWorldKeys(const JsonReader& reader, const json& root, SceneDescription&
   if (root.contains("dt")) scene.world.dt = reader.inRange(root["dt"], "dt", limits::minDt, limits::maxDt);
   if (root.contains("steps")) scene.steps = static_cast<int>(reader.integer(root["steps"], "steps", 1, limits::maxSteps));
   if (root.contains("allow_sleep")) scene.world.allowSleep = reader.boolean(root["allow_sleep"], "allow_sleep");
+  if (root.contains("threads"))
+    scene.world.threads = static_cast<int>(reader.integer(root["threads"], "threads", 0, limits::maxThreads));
   if (root.contains("broadphase")) readBroadPhase(reader, root["broadphase"], "broadphase", scene.world);
   if (root.contains("solver")) readSolver(reader, root["solver"], "solver", scene.world.solver);
   if (root.contains("restitution_combine"))
@@ -367,8 +369,8 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
   const json root = parseBoundedJson(jsonText, sourceName);
   reader.requireObject(root, "");
   reader.checkKeys(root, "", {"name", "description", "gravity", "dt", "steps", "bodies", "camera", "layers",
-                              "allow_sleep", "broadphase", "solver", "restitution_combine", "friction_combine",
-                              "forces"});
+                              "allow_sleep", "threads", "broadphase", "solver", "restitution_combine",
+                              "friction_combine", "forces"});
   SceneDescription scene;
   scene.source = sourceName;
   scene.name = std::filesystem::path(sourceName).stem().string();

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/parallel/task_system.h"
+
 namespace physdbg {
 
 BruteForceBroadPhase::BruteForceBroadPhase(const BruteForceOptions& options) : options_(options) {
@@ -57,21 +59,35 @@ const Aabb& BruteForceBroadPhase::fatBox(int proxy) const {
   return slots_[proxy].box;
 }
 
+void BruteForceBroadPhase::findRowPairs(int i, Row& row) const {
+  row.boxesTested = 0;
+  row.pairs.clear();
+  if (!slots_[i].alive) return;
+  const int count = static_cast<int>(slots_.size());
+  for (int j = options_.checkBothOrders ? 0 : i + 1; j < count; ++j) {
+    if (j == i || !slots_[j].alive) continue;
+    const Slot& first = slots_[i];
+    const Slot& second = slots_[j];
+    if (first.body == second.body || (!drivesPairs(first) && !drivesPairs(second))) continue;
+    ++row.boxesTested;
+    if (!first.box.overlaps(second.box) || j < i) continue;
+    row.pairs.push_back({std::min(first.body, second.body), std::max(first.body, second.body)});
+  }
+}
+
 void BruteForceBroadPhase::findPairs(std::vector<BodyPair>& pairs) {
   stats_ = BroadPhaseStats{};
   pairs.clear();
-  const int count = static_cast<int>(slots_.size());
-  for (int i = 0; i < count; ++i) {
-    if (!slots_[i].alive) continue;
-    for (int j = options_.checkBothOrders ? 0 : i + 1; j < count; ++j) {
-      if (j == i || !slots_[j].alive) continue;
-      const Slot& first = slots_[i];
-      const Slot& second = slots_[j];
-      if (first.body == second.body || (!drivesPairs(first) && !drivesPairs(second))) continue;
-      ++stats_.boxesTested;
-      if (!first.box.overlaps(second.box) || j < i) continue;
-      pairs.push_back({std::min(first.body, second.body), std::max(first.body, second.body)});
-    }
+  rows_.resize(slots_.size());
+  const auto findRows = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) findRowPairs(static_cast<int>(i), rows_[i]);
+  };
+  constexpr std::size_t rowGrain = 16;  // a row is up to n box tests
+  if (options_.tasks) options_.tasks->parallelFor(slots_.size(), rowGrain, findRows);
+  else findRows(0, slots_.size());
+  for (const Row& row : rows_) {
+    stats_.boxesTested += row.boxesTested;
+    pairs.insert(pairs.end(), row.pairs.begin(), row.pairs.end());
   }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());

@@ -24,6 +24,14 @@ SubstepContext substepContext(const StepContext& step, int count, double contact
   return substeps;
 }
 
+int ContactSolver::addCandidates(const std::vector<Contact>& candidates, const std::vector<double>& reaches,
+                                 const std::vector<RigidBody>& bodies, const StepContext&) {
+  int points = 0;
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    points += addCandidate(candidates[i], bodies[candidates[i].a], bodies[candidates[i].b], reaches[i]);
+  return points;
+}
+
 std::unique_ptr<ContactSolver> makeContactSolver(const SolverSettings& settings,
                                                  const NarrowPhaseOptions& narrowPhase) {
   switch (settings.kind) {

@@ -55,6 +55,12 @@ class ContactSolver {
   // Every narrow-phase result within reach, in pair order. Returns the
   // manifold points it kept (0 for a solver without manifolds).
   virtual int addCandidate(const Contact& contact, const RigidBody& a, const RigidBody& b, double reach) = 0;
+  // A whole pass's candidates at once, in pair order, `reaches[i]` being
+  // candidates[i]'s contactReach: keeps what addCandidate on each in turn
+  // would, which is what this default does. A solver may spread the work over
+  // step.tasks as long as the result does not depend on how it is split.
+  virtual int addCandidates(const std::vector<Contact>& candidates, const std::vector<double>& reaches,
+                            const std::vector<RigidBody>& bodies, const StepContext& step);
 
   // Solves `contacts` (the touching ones) or the kept candidates, and moves
   // every movable body to the end of the step.

@@ -34,6 +34,10 @@ class SequentialImpulseSolver final : public ContactSolver {
   double touchingGap() const override { return settings_.linearSlop; }
   void clearContacts() override;
   int addCandidate(const Contact& contact, const RigidBody& a, const RigidBody& b, double reach) override;
+  // Builds the manifolds in parallel, one slot per candidate and a scratch
+  // per piece, then keeps them in pair order (sequential_impulse_candidates.cpp).
+  int addCandidates(const std::vector<Contact>& candidates, const std::vector<double>& reaches,
+                    const std::vector<RigidBody>& bodies, const StepContext& step) override;
   SolverStepReport solve(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                          const std::vector<Contact>& contacts, const StepContext& step) override;
   const std::vector<Contact>& eventContacts(const std::vector<Contact>& contacts) override;
@@ -125,6 +129,8 @@ class SequentialImpulseSolver final : public ContactSolver {
   SolverSettings settings_;
   std::vector<ContactManifold> manifolds_, previousManifolds_;
   ManifoldScratch manifoldScratch_;
+  std::vector<ContactManifold> candidateManifolds_;  // per candidate of addCandidates, before keeping
+  std::vector<char> candidateKept_;                  // per candidate: within reach, so kept
   std::vector<Contact> eventContacts_;  // this step's contacts plus speculative impacts
   std::vector<SolverBody> solverBodies_;
   std::vector<MotionProperties> motionProperties_;  // per body in a manifold, from prepare

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <vector>
+
 #include "bench/bench.h"
 
 namespace physdbg::bench {
@@ -23,6 +25,26 @@ TEST(Benchmarks, EveryBenchmarkPrintsTheCommonFields) {
       EXPECT_GT(record["ours_ms"].get<double>(), 0.0) << record.dump();
     });
     EXPECT_GT(records, 0);
+  }
+}
+
+// The scene benchmarks run one thread and every core (one row each, the
+// all-core one with its scaling), or only what --threads asks for.
+TEST(Benchmarks, SceneBenchmarksReportTheirThreads) {
+  for (const Benchmark& benchmark : allBenchmarks()) {
+    if (benchmark.name != "drop" && benchmark.name != "pyramid") continue;
+    SCOPED_TRACE(benchmark.name);
+    BenchOptions options;
+    options.quick = true;
+    std::vector<int> threads;
+    benchmark.run(options, [&](const nlohmann::json& record) {
+      threads.push_back(record.at("threads").get<int>());
+      EXPECT_EQ(record.contains("scaling"), threads.back() > 1) << record.dump();
+    });
+    ASSERT_FALSE(threads.empty());
+    EXPECT_EQ(threads.front(), 1);
+    options.threads = 3;
+    benchmark.run(options, [&](const nlohmann::json& record) { EXPECT_EQ(record.at("threads"), 3) << record.dump(); });
   }
 }
 

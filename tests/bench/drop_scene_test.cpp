@@ -44,7 +44,7 @@ TEST(DropScene, LeavingTheContainerIsDetected) {
 TEST(BulletWorld, FreeFallMatchesOurs) {
   if (!BulletWorld::available()) GTEST_SKIP() << "built without Bullet";
   const DropScene drop = dropScene(64, DropShape::Box);
-  const EngineRun ours = runOurs(drop.scene, 10, {});
+  const EngineRun ours = runOurs(drop.scene, 10, {}, 1);
   const EngineRun peer = runBullet(drop.scene, 10, false);
   ASSERT_GT(ours.kineticEnergy, 0.0);
   EXPECT_NEAR(peer.kineticEnergy / ours.kineticEnergy, 1.0, 1e-5);

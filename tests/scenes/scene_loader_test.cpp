@@ -153,6 +153,9 @@ INSTANTIATE_TEST_SUITE_P(
                  R"({"solver": {"kind": "seed", "position_correction": 2}, "bodies": []})",
                  "solver.position_correction"},
         BadScene{"fractional steps", R"({"steps": 2.5, "bodies": []})", "steps"},
+        BadScene{"negative threads", R"({"threads": -1, "bodies": []})", "threads"},
+        BadScene{"too many threads", R"({"threads": 257, "bodies": []})", "threads"},
+        BadScene{"threads not a number", R"({"threads": "all", "bodies": []})", "threads"},
         BadScene{"bad camera", R"({"camera": {"eye": [1, 1, 1], "target": [1, 1, 1]}, "bodies": []})", "camera"},
         BadScene{"empty name", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "name": ""}]})", "bodies[0].name"},
         BadScene{"long name", R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "name": ")"
@@ -169,6 +172,12 @@ INSTANTIATE_TEST_SUITE_P(
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
       return name;
     });
+
+TEST(SceneLoader, ThreadsDefaultsToEveryCoreAndIsRead) {
+  const std::string bodies = R"("bodies": [{"shape": {"sphere": {"radius": 1}}}])";
+  EXPECT_EQ(parseScene("{" + bodies + "}", "default.json").world.threads, 0);
+  EXPECT_EQ(parseScene(R"({"threads": 3, )" + bodies + "}", "three.json").world.threads, 3);
+}
 
 TEST(SceneLoader, EveryShippedSceneFileLoads) {
   for (const auto& entry : std::filesystem::directory_iterator(PHYSDBG_SOURCE_DIR "/scenes")) {
