@@ -40,7 +40,7 @@ const Aabb& DynamicAabbTree::fatBox(int proxy) const {
 
 std::uint32_t DynamicAabbTree::userData(int proxy) const {
   requireProxy(proxy, "userData");
-  return nodes_[proxy].userData;
+  return userData_[proxy];
 }
 
 int DynamicAabbTree::allocateNode() {
@@ -48,6 +48,7 @@ int DynamicAabbTree::allocateNode() {
   if (node == nullNode) {
     node = static_cast<int>(nodes_.size());
     nodes_.emplace_back();
+    userData_.push_back(0);
   } else {
     freeList_ = nodes_[node].parent;
   }
@@ -69,7 +70,7 @@ int DynamicAabbTree::createProxy(const Aabb& tightBox, std::uint32_t userData) {
   requireValidBox(tightBox, "createProxy");
   const int leaf = allocateNode();
   nodes_[leaf].box = tightBox.enlarged(options_.margin);
-  nodes_[leaf].userData = userData;
+  userData_[leaf] = userData;
   insertLeaf(leaf);
   ++proxyCount_;
   return leaf;

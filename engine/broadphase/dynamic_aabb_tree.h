@@ -84,14 +84,17 @@ class DynamicAabbTree {
   const Aabb& box(int node) const { return nodes_[node].box; }
 
  private:
-  struct Node {
+  // One cache line per node, aligned to it: a traversal that reads a node's
+  // box finds its child ids in the same line and never straddles two. User
+  // data, read only when a pair is reported, lives apart (userData_).
+  struct alignas(64) Node {
     Aabb box;
     int parent = nullNode;  // next free node while on the free list
     int child1 = nullNode;
     int child2 = nullNode;
     int height = 0;  // leaves 0; -1 marks a free node
-    std::uint32_t userData = 0;
   };
+  static_assert(sizeof(Node) == 64, "a node should fill exactly one cache line");
 
   int allocateNode();
   void freeNode(int node);
@@ -112,6 +115,7 @@ class DynamicAabbTree {
 
   DynamicAabbTreeOptions options_;
   std::vector<Node> nodes_;
+  std::vector<std::uint32_t> userData_;  // indexed like nodes_, meaningful for leaves
   int root_ = nullNode;
   int freeList_ = nullNode;
   int nodeCount_ = 0;
@@ -125,6 +129,14 @@ class DynamicAabbTree {
   };
   std::vector<Candidate> heap_;  // scratch of the branch-and-bound search, kept to avoid reallocations
 };
+
+// Aabb::overlaps without branches: traversals test two boxes per node, and
+// six comparisons combined with & cost less than the mispredicted jumps of
+// an early exit (whether a box overlaps is close to a coin toss there).
+inline bool overlapping(const Aabb& a, const Aabb& b) {
+  return (a.min.x() <= b.max.x()) & (b.min.x() <= a.max.x()) & (a.min.y() <= b.max.y()) & (b.min.y() <= a.max.y()) &
+         (a.min.z() <= b.max.z()) & (b.min.z() <= a.max.z());
+}
 
 // Entry parameter t of the segment origin + t * direction into box, or a negative value when it misses
 // within [0, maxFraction]. inverseDirection components may be infinite (axis-parallel rays).
@@ -140,7 +152,7 @@ void DynamicAabbTree::query(const Aabb& box, Callback&& callback) const {
     const int node = stack.back();
     stack.pop_back();
     const Node& current = nodes_[node];
-    if (!current.box.overlaps(box)) continue;
+    if (!overlapping(current.box, box)) continue;
     if (current.child1 == nullNode) {
       if (!callback(node)) return;
     } else {

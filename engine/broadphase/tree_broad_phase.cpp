@@ -58,34 +58,57 @@ void TreeBroadPhase::setProxyActive(int proxy, bool active) {
 }
 
 // Collects the eligible pairs of one changed proxy. A pair of two changed
-// proxies is taken from the lower id's query only. Returns the nodes visited.
+// proxies is taken from the lower id's query only. Both children of a node
+// are tested where the node comes off the stack: their two boxes load side by
+// side instead of one after the other, and only overlapping internal nodes
+// are pushed. The stack never holds more than the tree's height plus one
+// node, so it is sized once and indexed without checks. Returns the boxes
+// tested (the root, and both children of every overlapping internal node).
 long long TreeBroadPhase::queryChanged(int proxy) {
-  const Aabb& box = tree_.box(proxy);
+  const Aabb box = tree_.box(proxy);
+  const int root = tree_.root();
+  if (tree_.isLeaf(root) || !overlapping(tree_.box(root), box)) return 1;  // a lone root is this proxy
+  const std::size_t depthBound = static_cast<std::size_t>(tree_.height()) + 2;
+  if (stack_.size() < depthBound) stack_.resize(2 * depthBound);
+  int* const stack = stack_.data();
+  const ProxyState self = proxies_[proxy];
   const bool drives = drivesPairs(proxy);
-  const std::uint32_t body = proxies_[proxy].body;
-  long long visited = 0;
-  stack_.clear();
-  stack_.push_back(tree_.root());
-  while (!stack_.empty()) {
-    const int node = stack_.back();
-    stack_.pop_back();
-    ++visited;
-    if (!tree_.box(node).overlaps(box)) continue;
-    if (!tree_.isLeaf(node)) {
-      stack_.push_back(tree_.child2(node));
-      stack_.push_back(tree_.child1(node));
-      continue;
-    }
-    if (node == proxy || (proxies_[node].touched && node < proxy)) continue;
-    const ProxyState& other = proxies_[node];
-    if (other.body == body || (!drives && !drivesPairs(node))) continue;
-    if (body < other.body) {
-      fresh_.push_back({body, other.body, proxy, node});
+  const auto report = [&](int other) {
+    if (other == proxy) return;
+    const ProxyState& state = proxies_[other];
+    if ((state.touched && other < proxy) || state.body == self.body) return;
+    if (!drives && !(state.motion == ProxyMotion::Dynamic && state.active)) return;
+    if (self.body < state.body) {
+      fresh_.push_back({self.body, state.body, proxy, other});
     } else {
-      fresh_.push_back({other.body, body, node, proxy});
+      fresh_.push_back({state.body, self.body, other, proxy});
+    }
+  };
+  long long tested = 1;
+  int top = 0;
+  stack[top++] = root;
+  while (top > 0) {
+    const int node = stack[--top];
+    const int first = tree_.child1(node), second = tree_.child2(node);
+    const bool overlapsFirst = overlapping(tree_.box(first), box);
+    const bool overlapsSecond = overlapping(tree_.box(second), box);
+    tested += 2;
+    if (overlapsSecond) {
+      if (tree_.isLeaf(second)) {
+        report(second);
+      } else {
+        stack[top++] = second;
+      }
+    }
+    if (overlapsFirst) {
+      if (tree_.isLeaf(first)) {
+        report(first);
+      } else {
+        stack[top++] = first;
+      }
     }
   }
-  return visited;
+  return tested;
 }
 
 namespace {

@@ -1,11 +1,20 @@
 #include "engine/colliders/convex_mesh_collider.h"
 
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 namespace physdbg {
 namespace {
 
 constexpr int kBruteForceVertexCount = 16;
+// Plateau vertices walked before giving up for a linear scan (a face seen
+// head-on with more corners than this, or a zero direction).
+constexpr int kPlateauCapacity = 64;
+
+// p . d written out, so every caller rounds it alike; the climb and the
+// scan must agree to the last bit.
+double along(const Vec3& p, const Vec3& d) { return p.x() * d.x() + p.y() * d.y() + p.z() * d.z(); }
 
 // Six axis directions, then the eight cube diagonals.
 Vec3 seedDirection(int s) {
@@ -65,10 +74,11 @@ ConvexMeshCollider::ConvexMeshCollider(std::vector<Vec3> points) : hull_(buildCo
   const auto& v = hull_.vertices;
   bounds_ = {v.front(), v.front()};
   for (const Vec3& p : v) bounds_ = {bounds_.min.cwiseMin(p), bounds_.max.cwiseMax(p)};
+  bandScale_ = 32.0 * DBL_EPSILON * std::max(bounds_.min.cwiseAbs().maxCoeff(), bounds_.max.cwiseAbs().maxCoeff());
   for (int s = 0; s < static_cast<int>(seedVertices_.size()); ++s) {
     const Vec3 direction = seedDirection(s);
     for (int i = 0; i < static_cast<int>(v.size()); ++i) {
-      if (v[i].dot(direction) > v[seedVertices_[s]].dot(direction)) seedVertices_[s] = i;
+      if (along(v[i], direction) > along(v[seedVertices_[s]], direction)) seedVertices_[s] = i;
     }
   }
   const MassProperties mass = massProperties(hull_, bounds_);
@@ -77,44 +87,93 @@ ConvexMeshCollider::ConvexMeshCollider(std::vector<Vec3> points) : hull_(buildCo
   unitInertia_ = mass.unitInertia;
 }
 
+int ConvexMeshCollider::scan(const Vec3& direction) const {
+  const auto& v = hull_.vertices;
+  int best = 0;
+  double top = along(v[0], direction);
+  for (int i = 1; i < static_cast<int>(v.size()); ++i) {
+    const double value = along(v[i], direction);
+    if (value > top) top = value, best = i;
+  }
+  return best;
+}
+
 int ConvexMeshCollider::supportIndex(const Vec3& direction, int hint) const {
   const auto& v = hull_.vertices;
   const int count = static_cast<int>(v.size());
-  if (count <= kBruteForceVertexCount) {
-    int best = 0;
-    for (int i = 1; i < count; ++i) {
-      if (v[i].dot(direction) > v[best].dot(direction)) best = i;
-    }
-    return best;
-  }
-  // Candidates: the hint, the extreme vertex of the dominant axis and that of
-  // the direction's octant diagonal.
+  const double length = std::abs(direction.x()) + std::abs(direction.y()) + std::abs(direction.z());
+  // A direction with a NaN or an infinity has no climb to speak of.
+  if (count <= kBruteForceVertexCount || !(length <= DBL_MAX)) return scan(direction);
+  // Start from the best of the hint, the extreme vertex of the direction's
+  // octant diagonal and that of its dominant axis: fourteen precomputed
+  // extremes put a climb within a few steps of most answers.
   int axis = 0;
   direction.cwiseAbs().maxCoeff(&axis);
-  const int axisSeed = seedVertices_[2 * axis + (direction[axis] < 0.0 ? 1 : 0)];
   const int octant = (direction.x() >= 0.0 ? 1 : 0) | (direction.y() >= 0.0 ? 2 : 0) | (direction.z() >= 0.0 ? 4 : 0);
   int start = seedVertices_[6 + octant];
-  double best = v[start].dot(direction);
-  for (int candidate : {axisSeed, hint}) {
+  double best = along(v[start], direction);
+  for (const int candidate : {seedVertices_[2 * axis + (direction[axis] < 0.0 ? 1 : 0)], hint}) {
     if (candidate < 0 || candidate >= count) continue;
-    const double value = v[candidate].dot(direction);
+    const double value = along(v[candidate], direction);
     if (value > best) best = value, start = candidate;
   }
-  return climb(direction, start);
+  return climb(direction, start, bandScale_ * length);
 }
 
-int ConvexMeshCollider::climb(const Vec3& direction, int start) const {
-  const auto& v = hull_.vertices;
+// Steepest ascent to a vertex no neighbour beats. Rounding can leave a tied
+// vertex (same face) above or below by a few ulps, so when a neighbour of
+// the top is within `band` of it, the plateau is settled exactly: each p . d
+// is within 3.5 ulps of sum |p_i d_i| <= largest coordinate * |d|_1 of its
+// exact value, and the hull is exactly convex on points within half an ulp
+// of the vertices, so 32 ulps of that covers both, four times over.
+int ConvexMeshCollider::climb(const Vec3& direction, int start, double band) const {
   int current = start;
-  double best = v[current].dot(direction);
-  for (int previous = -1; previous != current;) {
-    previous = current;
-    for (int k = hull_.neighbourStart[previous]; k < hull_.neighbourStart[previous + 1]; ++k) {
-      const double value = hull_.neighbourPoints[k].dot(direction);
-      if (value > best) best = value, current = hull_.neighbours[k];
+  double best = along(hull_.vertices[current], direction);
+  while (true) {
+    int next = current;
+    double nextValue = best;
+    bool tied = false;
+    const double floor = best - band;
+    for (int k = hull_.neighbourStart[current]; k < hull_.neighbourStart[current + 1]; ++k) {
+      const double value = along(hull_.neighbourPoints[k], direction);
+      if (value < floor) continue;  // most neighbours: one test, as a plain climb
+      if (value > nextValue) {
+        nextValue = value, next = hull_.neighbours[k];
+      } else {
+        tied = true;  // within the band of the best so far; matters only at the top
+      }
+    }
+    if (next == current) return tied ? settlePlateau(direction, current, floor) : current;
+    current = next;
+    best = nextValue;
+  }
+}
+
+// On an exactly convex hull the vertices above any level are connected, so
+// every vertex that can be the scan's answer (within the band of the climb's
+// top) is reached from it through vertices above best - band. Among them the
+// largest p . d wins, then the lowest index: the linear scan's rule.
+int ConvexMeshCollider::settlePlateau(const Vec3& direction, int top, double floor) const {
+  std::array<int, kPlateauCapacity> reached;
+  int reachedCount = 0;
+  reached[reachedCount++] = top;
+  int best = top;
+  double bestValue = along(hull_.vertices[top], direction);
+  for (int i = 0; i < reachedCount; ++i) {
+    const int vertex = reached[i];
+    for (int k = hull_.neighbourStart[vertex]; k < hull_.neighbourStart[vertex + 1]; ++k) {
+      const double value = along(hull_.neighbourPoints[k], direction);
+      const int neighbour = hull_.neighbours[k];
+      if (!(value >= floor) || std::find(reached.begin(), reached.begin() + reachedCount, neighbour) !=
+                                   reached.begin() + reachedCount) {
+        continue;
+      }
+      if (reachedCount == kPlateauCapacity) return scan(direction);
+      reached[reachedCount++] = neighbour;
+      if (value > bestValue || (value == bestValue && neighbour < best)) best = neighbour, bestValue = value;
     }
   }
-  return current;
+  return best;
 }
 
 }  // namespace physdbg

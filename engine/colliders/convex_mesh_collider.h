@@ -2,9 +2,16 @@
 // Convex mesh from a point cloud. The hull is built once; support queries
 // hill-climb over hull-vertex adjacency (a linear function on a convex
 // polytope has no local maximum that is not global), starting from the best
-// of the caller's warm-start hint and fourteen precomputed extreme vertices
-// (along the axes and the cube diagonals). Small hulls
-// are scanned by brute force, which is faster than climbing.
+// of the caller's warm-start hints and fourteen precomputed extreme vertices
+// (along the axes and the cube diagonals). Small hulls are scanned by brute
+// force, which is faster than climbing.
+//
+// The answer is the linear scan's, bit for bit, whatever the hints: the
+// lowest-numbered vertex of largest p . d. Where the climb stops, neighbours
+// within rounding of the top are settled by a short walk over that plateau
+// (the vertices of a face seen head-on), so a warm start never changes which
+// of several tied vertices comes back, and GJK/EPA results do not depend on
+// the order of earlier queries.
 //
 // The local frame is the one the points are given in; centroid() is the centre
 // of mass in that frame and unitInertia() is taken about the centroid. Both
@@ -29,8 +36,10 @@ class ConvexMeshCollider final : public Collider {
   const std::vector<std::array<int, 3>>& hullTriangles() const { return hull_.triangles; }
   const Vec3& centroid() const { return centroid_; }
 
-  // Index of the support vertex; `hint` is the vertex to start climbing from
-  // (any value is accepted; out-of-range hints are ignored).
+  // Index of the support vertex: the lowest index of largest p . direction.
+  // `hint` is a vertex to start climbing from, such as an earlier answer
+  // along a nearby direction (any value is accepted; out-of-range hints are
+  // ignored). It changes how fast the answer comes, never the answer.
   int supportIndex(const Vec3& direction, int hint = -1) const;
 
   ColliderKind kind() const override { return ColliderKind::ConvexMesh; }
@@ -40,10 +49,13 @@ class ConvexMeshCollider final : public Collider {
   Mat3 unitInertia() const override { return unitInertia_; }
 
  private:
-  int climb(const Vec3& direction, int start) const;
+  int scan(const Vec3& direction) const;
+  int climb(const Vec3& direction, int start, double band) const;
+  int settlePlateau(const Vec3& direction, int top, double floor) const;
 
   ConvexHull hull_;
   std::array<int, 14> seedVertices_{};
+  double bandScale_ = 0.0;  // times |d|_1: the rounding band of p . d (see climb)
   Aabb bounds_;
   Vec3 centroid_ = Vec3::Zero();
   double volume_ = 0.0;

@@ -115,6 +115,35 @@ TEST(TreeBroadPhase, PairsEqualBruteForceWithTouchingAndIdenticalBoxes) {
   }
 }
 
+// The pair query's stack is sized from the tree's height: a tree built from
+// a sorted row without rotations is a long chain, far deeper than any stack
+// a balanced tree needs, and must still give every pair.
+TEST(TreeBroadPhase, PairsEqualBruteForceOnADegenerateDeepTree) {
+  DynamicAabbTreeOptions options;
+  options.rotations = false;
+  TreeBroadPhase broadPhase(options);
+  std::map<int, ProxyRecord> proxies;
+  const std::vector<Aabb> row = testing::sortedRow(400);
+  for (std::size_t i = 0; i < row.size(); ++i) {
+    const auto body = static_cast<std::uint32_t>(i);
+    proxies[broadPhase.addProxy(row[i], body, ProxyMotion::Dynamic)] = {row[i], body, ProxyMotion::Dynamic};
+  }
+  EXPECT_GT(broadPhase.tree().height(), 100);
+  std::mt19937 random(11);
+  std::normal_distribution<double> step(0.0, 0.3);
+  std::vector<BodyPair> pairs;
+  for (int frame = 0; frame < 5; ++frame) {
+    for (auto& [proxy, record] : proxies) {
+      const Vec3 displacement(step(random), step(random), step(random));
+      record.box = {record.box.min + displacement, record.box.max + displacement};
+      broadPhase.moveProxy(proxy, record.box, displacement);
+    }
+    broadPhase.findPairs(pairs);
+    ASSERT_EQ(pairs, expectedPairs(broadPhase, proxies)) << "frame " << frame;
+  }
+  EXPECT_FALSE(pairs.empty());
+}
+
 TEST(BruteForceBroadPhase, PairsFollowTheContractInBothLoopModes) {
   for (const bool bothOrders : {false, true}) {
     BruteForceOptions options;

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <string>
 
@@ -69,6 +70,91 @@ TEST(ConvexMeshCollider, HillClimbingSupportMatchesBruteForce) {
     EXPECT_NEAR(mesh.localSupport(direction).dot(direction), best, 1e-12);
     hint = mesh.supportIndex(direction, hint);
     EXPECT_NEAR(mesh.hullVertices()[hint].dot(direction), best, 1e-12);
+  }
+}
+
+// The linear scan the hill climb must reproduce bit for bit: p . d in the
+// same order of operations, the first (lowest) index of the largest value.
+int scannedSupport(const std::vector<Vec3>& vertices, const Vec3& d) {
+  int best = 0;
+  double top = vertices[0].x() * d.x() + vertices[0].y() * d.y() + vertices[0].z() * d.z();
+  for (int i = 1; i < static_cast<int>(vertices.size()); ++i) {
+    const double value = vertices[i].x() * d.x() + vertices[i].y() * d.y() + vertices[i].z() * d.z();
+    if (value > top) top = value, best = i;
+  }
+  return best;
+}
+
+std::vector<Vec3> sphereCloud(int count, unsigned seed, const Vec3& offset = Vec3::Zero()) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> gaussian(0.0, 1.0);
+  std::vector<Vec3> cloud;
+  for (int i = 0; i < count; ++i) cloud.push_back(offset + Vec3(gaussian(rng), gaussian(rng), gaussian(rng)).normalized());
+  return cloud;
+}
+
+// Two regular polygons stacked: caps with `sides` corners seen head-on tie
+// every corner, and the side quads tie pairs and fours.
+std::vector<Vec3> prism(int sides) {
+  std::vector<Vec3> points;
+  for (int i = 0; i < sides; ++i) {
+    const double angle = 2.0 * M_PI * i / sides;
+    for (double z : {-0.5, 0.5}) points.emplace_back(std::cos(angle), std::sin(angle), z);
+  }
+  return points;
+}
+
+// Directions where several vertices tie: hull triangle normals, face
+// normals, axes, and the same nudged by a few ulps; then random ones.
+std::vector<Vec3> probeDirections(const ConvexMeshCollider& mesh, std::mt19937& rng) {
+  std::normal_distribution<double> gaussian(0.0, 1.0);
+  const auto& v = mesh.hullVertices();
+  std::vector<Vec3> directions;
+  for (const auto& t : mesh.hullTriangles()) directions.push_back((v[t[1]] - v[t[0]]).cross(v[t[2]] - v[t[0]]));
+  for (const HullFace& face : mesh.hullFaces()) directions.push_back(face.normal);
+  for (int axis = 0; axis < 3; ++axis) directions.push_back(Vec3::Unit(axis)), directions.push_back(-Vec3::Unit(axis));
+  const std::size_t exact = directions.size();
+  for (std::size_t i = 0; i < exact; ++i) {
+    directions.push_back(directions[i] + 1e-15 * Vec3(gaussian(rng), gaussian(rng), gaussian(rng)));
+  }
+  for (int i = 0; i < 2000; ++i) directions.emplace_back(gaussian(rng), gaussian(rng), gaussian(rng));
+  directions.push_back(Vec3::Zero());
+  return directions;
+}
+
+TEST(ConvexMeshCollider, SupportIndexIsTheLinearScansWhateverTheHint) {
+  std::vector<Vec3> duplicated = sphereCloud(300, 9);
+  for (int i = 0; i < 100; ++i) duplicated.push_back(duplicated[i]);  // duplicates
+  std::vector<Vec3> lattice;  // coplanar and collinear points everywhere; only the corners stay
+  for (int i = 0; i < 6; ++i) {
+    for (int j = 0; j < 6; ++j) {
+      for (int k = 0; k < 6; ++k) lattice.emplace_back(i, j, k);
+    }
+  }
+  const std::vector<std::pair<const char*, std::vector<Vec3>>> clouds{
+      {"tetrahedron", {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}},
+      {"lattice", lattice},
+      {"sphere 256", sphereCloud(256, 17)},
+      {"sphere 1000 far from the origin", sphereCloud(1000, 23, Vec3(1e5, -3e4, 2e5))},
+      {"sphere with duplicates", duplicated},
+      {"prism of 24 sides", prism(24)},
+      {"prism of 100 sides (a plateau past the walk's capacity)", prism(100)},
+  };
+  std::mt19937 rng(31);
+  for (const auto& [name, cloud] : clouds) {
+    const ConvexMeshCollider mesh(cloud);
+    const auto& v = mesh.hullVertices();
+    const int count = static_cast<int>(v.size());
+    int checked = 0;
+    for (const Vec3& d : probeDirections(mesh, rng)) {
+      const int expected = scannedSupport(v, d);
+      for (const int hint : {-1, static_cast<int>(rng() % count), expected, count + 5}) {
+        ASSERT_EQ(mesh.supportIndex(d, hint), expected) << name << ", direction " << d.transpose() << ", hint " << hint;
+        ++checked;
+      }
+      ASSERT_EQ(mesh.localSupport(d), v[expected]) << name;
+    }
+    EXPECT_GT(checked, 8000) << name;
   }
 }
 
