@@ -1,6 +1,7 @@
 #include "engine/parallel/task_system.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
@@ -11,8 +12,15 @@
 namespace physdbg {
 
 // An arena caps the threads a world uses, whatever else the process runs.
+// Asked for more threads than the machine has (a determinism test running 4
+// on 2 cores), oneTBB would quietly keep its default worker count and print a
+// warning; the control raises that limit while this arena lives.
 struct TaskSystem::Arena {
-  explicit Arena(int threads) : arena(threads) {}
+  explicit Arena(int threads)
+      : limit(tbb::global_control::max_allowed_parallelism,
+              static_cast<std::size_t>(std::max(threads, TaskSystem::hardwareThreads()))),
+        arena(threads) {}
+  tbb::global_control limit;
   tbb::task_arena arena;
 };
 

@@ -52,6 +52,22 @@ TEST(TaskSystem, UsesMoreThanOneThreadWhenAsked) {
   EXPECT_EQ(most.load(), 2);
 }
 
+// More threads than cores really run (a determinism test asks for 4 on 2).
+TEST(TaskSystem, MoreThreadsThanCoresAllRun) {
+  const int threads = TaskSystem::hardwareThreads() + 2;
+  const TaskSystem tasks(threads);
+  std::atomic<int> running{0}, most{0};
+  tasks.parallelFor(256, 1, [&](std::size_t, std::size_t) {
+    const int now = ++running;
+    int seen = most.load();
+    while (now > seen && !most.compare_exchange_weak(seen, now)) {
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    --running;
+  });
+  EXPECT_EQ(most.load(), threads);
+}
+
 TEST(TaskSystem, ZeroThreadsMeansTheMachines) {
   EXPECT_EQ(TaskSystem(0).threadCount(), TaskSystem::hardwareThreads());
 }
