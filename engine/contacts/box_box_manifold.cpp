@@ -59,36 +59,40 @@ void buildBoxBoxManifold(const BoxCollider& a, const Transform& ta, const BoxCol
   manifold.normal = referenceIsA ? faceNormal : Vec3(-faceNormal);
   const double faceOffset = reference.halfExtents[referenceFace.axis];
   const std::uint32_t base = featureBase(referenceIsA, referenceFace.index, incidentFace.index);
-  std::array<ManifoldPoint, 16> kept;
+  // Points within reach, as indices into the clipped polygon; ManifoldPoints
+  // are made only for the ones kept (usually all, four or fewer).
+  std::array<int, 16> kept;
   std::size_t keptCount = 0;
-  for (int i = 0; i < polygon.count; ++i) {
-    const Vec3& onIncident = polygon.points[i].point;
-    const double separation = referenceFace.sign * onIncident[referenceFace.axis] - faceOffset;
-    if (separation > speculativeDistance) continue;
+  for (int i = 0; i < polygon.count; ++i)
+    if (referenceFace.sign * polygon.points[i].point[referenceFace.axis] - faceOffset <= speculativeDistance)
+      kept[keptCount++] = i;
+  const auto makePoint = [&](int index, ManifoldPoint& point) {
+    const Vec3& onIncident = polygon.points[index].point;
     Vec3 onReference = onIncident;
     onReference[referenceFace.axis] = referenceFace.sign * faceOffset;
     const Vec3 worldIncident = reference.transform.position + reference.rotation * onIncident;
     const Vec3 worldReference = reference.transform.position + reference.rotation * onReference;
     const Vec3 incidentLocal = relativeRotation.transpose() * (onIncident - relativeOffset);
-    ManifoldPoint& point = kept[keptCount++];
     point = ManifoldPoint{};
     point.pointA = referenceIsA ? worldReference : worldIncident;
     point.pointB = referenceIsA ? worldIncident : worldReference;
     point.localA = referenceIsA ? onReference : incidentLocal;
     point.localB = referenceIsA ? incidentLocal : onReference;
-    point.separation = separation;
-    point.featureId = base | clipTag(polygon.points[i]);
-  }
+    point.separation = referenceFace.sign * onIncident[referenceFace.axis] - faceOffset;
+    point.featureId = base | clipTag(polygon.points[index]);
+  };
   if (keptCount == 0) {
     singlePoint(ta, tb, result, manifold);
     return;
   }
   if (keptCount <= static_cast<std::size_t>(ContactManifold::maxPoints)) {
-    manifold.pointCount = 0;
-    for (std::size_t i = 0; i < keptCount; ++i) manifold.points[manifold.pointCount++] = kept[i];
+    manifold.pointCount = static_cast<int>(keptCount);
+    for (std::size_t i = 0; i < keptCount; ++i) makePoint(kept[i], manifold.points[i]);
     return;
   }
-  reduceToFour(manifold, std::span<const ManifoldPoint>(kept.data(), keptCount), kReductionTieMargin);
+  std::array<ManifoldPoint, 16> candidates;
+  for (std::size_t i = 0; i < keptCount; ++i) makePoint(kept[i], candidates[i]);
+  reduceToFour(manifold, std::span<const ManifoldPoint>(candidates.data(), keptCount), kReductionTieMargin);
 }
 
 }  // namespace physdbg

@@ -12,25 +12,43 @@ std::uint8_t sharedLine(const ClipPolygon::Point& from, const ClipPolygon::Point
   return from.lines[1];  // only for a polygon round-off has bent; any stable choice will do
 }
 
-// One Sutherland-Hodgman pass against side plane `side`: normal . x <= offset.
-void clipAgainstPlane(const ClipPolygon& input, const Vec3& normal, double offset, std::uint8_t side,
+// Side plane i of a face runs along its edge from corner i to corner i + 1;
+// in the box's frame it is sign * x[coordinate] <= limit.
+struct SidePlane {
+  int coordinate;
+  double sign;
+};
+
+SidePlane sidePlane(const BoxFace& face, int side) {
+  const int u = (face.axis + 1) % 3, v = (face.axis + 2) % 3;
+  switch (side) {
+    case 0: return {v, face.sign};   // corners (+u, +v) to (-u, +v), v scaled by the face's sign
+    case 1: return {u, -1.0};        // (-u, +v) to (-u, -v)
+    case 2: return {v, -face.sign};  // (-u, -v) to (+u, -v)
+    default: return {u, 1.0};        // (+u, -v) to (+u, +v)
+  }
+}
+
+// One Sutherland-Hodgman pass against side plane `line` (4 + side index).
+void clipAgainstPlane(const ClipPolygon& input, const SidePlane& plane, double limit, std::uint8_t line,
                       ClipPolygon& output) {
   output.count = 0;
   const int count = input.count;
+  const auto distance = [&](const Vec3& point) { return plane.sign * point[plane.coordinate] - limit; };
   if (count == 1) {
-    if (input.points[0].point.dot(normal) <= offset) output.push(input.points[0].point, input.points[0].lines);
+    if (distance(input.points[0].point) <= 0.0) output.push(input.points[0].point, input.points[0].lines);
     return;
   }
   const int edges = count == 2 ? 1 : count;
   for (int i = 0; i < edges; ++i) {
     const ClipPolygon::Point& current = input.points[i];
     const ClipPolygon::Point& next = input.points[(i + 1) % count];
-    const double distanceCurrent = current.point.dot(normal) - offset;
-    const double distanceNext = next.point.dot(normal) - offset;
+    const double distanceCurrent = distance(current.point);
+    const double distanceNext = distance(next.point);
     if (distanceCurrent <= 0.0) output.push(current.point, current.lines);
     if ((distanceCurrent < 0.0) != (distanceNext < 0.0) && distanceCurrent != distanceNext) {
       const double t = distanceCurrent / (distanceCurrent - distanceNext);
-      output.push(current.point + t * (next.point - current.point), {sharedLine(current, next), side});
+      output.push(current.point + t * (next.point - current.point), {sharedLine(current, next), line});
     }
     if (count == 2 && distanceNext <= 0.0) output.push(next.point, next.lines);
   }
@@ -60,15 +78,21 @@ std::uint32_t clipTag(const ClipPolygon::Point& point) {
   return 0x800u | static_cast<std::uint32_t>(first * 8 + second);
 }
 
+// Ping-pongs between `polygon` and one scratch polygon; four passes end in
+// `polygon` itself, so only an early exit (nothing left) copies.
 void clipToFaceSides(const BoxFace& face, double tolerance, ClipPolygon& polygon) {
-  const Vec3 faceNormal = face.normal();
-  ClipPolygon clipped;
-  for (int i = 0; i < 4 && polygon.count > 0; ++i) {
-    const Vec3& start = face.corners[i];
-    const Vec3 sideNormal = (face.corners[(i + 1) % 4] - start).cross(faceNormal);
-    const double offset = sideNormal.dot(start) + tolerance * sideNormal.norm();
-    clipAgainstPlane(polygon, sideNormal, offset, static_cast<std::uint8_t>(4 + i), clipped);
-    polygon = clipped;
+  const Vec3 half = face.corners[0].cwiseAbs();
+  ClipPolygon scratch;
+  ClipPolygon* input = &polygon;
+  ClipPolygon* output = &scratch;
+  for (int side = 0; side < 4 && input->count > 0; ++side) {
+    const SidePlane plane = sidePlane(face, side);
+    clipAgainstPlane(*input, plane, half[plane.coordinate] + tolerance, static_cast<std::uint8_t>(4 + side), *output);
+    std::swap(input, output);
+  }
+  if (input != &polygon) {
+    polygon.count = input->count;
+    std::copy_n(input->points.begin(), input->count, polygon.points.begin());
   }
 }
 

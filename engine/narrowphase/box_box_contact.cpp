@@ -104,10 +104,17 @@ struct Witness {
   bool exact = false;
 };
 
-// Face contact in the reference box's frame: the incident box's most opposed
-// face clipped to the reference face's rectangle (no tolerance: the points
-// must really lie over the face), deepest point first. `found` is false when
-// nothing of the incident face lies over the reference face.
+// Corner of a box farthest along `direction` (box frame; zero components
+// take the positive side, as BoxCollider::localSupport does).
+Vec3 supportCorner(const Vec3& half, const Vec3& direction) {
+  return {signOf(direction.x()) * half.x(), signOf(direction.y()) * half.y(), signOf(direction.z()) * half.z()};
+}
+
+// Face contact in the reference box's frame: the incident box's deepest
+// point over the reference face's rectangle (no tolerance: the points must
+// really lie over the face). Usually its deepest corner is over the face;
+// otherwise its most opposed face is clipped to the rectangle. `found` is
+// false when nothing of the incident face lies over the reference face.
 struct FacePoints {
   Vec3 onReference = Vec3::Zero(), onIncident = Vec3::Zero();
   double separation = std::numeric_limits<double>::infinity();
@@ -117,29 +124,31 @@ struct FacePoints {
 FacePoints deepestClippedPoint(const Vec3& referenceHalf, const Vec3& referenceDirection, const Vec3& incidentHalf,
                                const Mat3& incidentRotation, const Vec3& incidentOffset) {
   const BoxFace referenceFace = boxFaceAlong(referenceHalf, referenceDirection);
-  const BoxFace incidentFace = boxFaceAlong(incidentHalf, -(incidentRotation.transpose() * referenceDirection));
-  ClipPolygon polygon;
-  for (int i = 0; i < 4; ++i) polygon.pushCorner(incidentRotation * incidentFace.corners[i] + incidentOffset, i);
-  clipToFaceSides(referenceFace, 0.0, polygon);
+  const int axis = referenceFace.axis, u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const Vec3 incidentDirection = -(incidentRotation.transpose() * referenceDirection);
   FacePoints deepest;
-  const int axis = referenceFace.axis;
-  for (int k = 0; k < polygon.count; ++k) {
-    const Vec3& point = polygon.points[k].point;
-    const double separation = referenceFace.sign * point[axis] - referenceHalf[axis];
-    if (separation >= deepest.separation) continue;
-    deepest.separation = separation;
-    deepest.onIncident = point;
+  const Vec3 corner = incidentRotation * supportCorner(incidentHalf, incidentDirection) + incidentOffset;
+  if (std::abs(corner[u]) <= referenceHalf[u] && std::abs(corner[v]) <= referenceHalf[v]) {
+    deepest.separation = referenceFace.sign * corner[axis] - referenceHalf[axis];
+    deepest.onIncident = corner;
     deepest.found = true;
+  } else {
+    const BoxFace incidentFace = boxFaceAlong(incidentHalf, incidentDirection);
+    ClipPolygon polygon;
+    for (int i = 0; i < 4; ++i) polygon.pushCorner(incidentRotation * incidentFace.corners[i] + incidentOffset, i);
+    clipToFaceSides(referenceFace, 0.0, polygon);
+    for (int k = 0; k < polygon.count; ++k) {
+      const Vec3& point = polygon.points[k].point;
+      const double separation = referenceFace.sign * point[axis] - referenceHalf[axis];
+      if (separation >= deepest.separation) continue;
+      deepest.separation = separation;
+      deepest.onIncident = point;
+      deepest.found = true;
+    }
   }
   deepest.onReference = deepest.onIncident;
   deepest.onReference[axis] = referenceFace.sign * referenceHalf[axis];
   return deepest;
-}
-
-// Corner of a box farthest along `direction` (box frame; zero components
-// take the positive side, as BoxCollider::localSupport does).
-Vec3 supportCorner(const Vec3& half, const Vec3& direction) {
-  return {signOf(direction.x()) * half.x(), signOf(direction.y()) * half.y(), signOf(direction.z()) * half.z()};
 }
 
 Witness faceWitness(const PairFrame& pair, const Axis& axis, double tolerance) {
