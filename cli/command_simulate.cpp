@@ -131,10 +131,10 @@ int runSimulate(const std::vector<std::string>& args) {
               world.threadCount(), world.threadCount() == 1 ? "" : "s", kineticEnergy);
   const StepStats& stats = world.lastStepStats();
   std::printf("last step: %d awake (%d with axis locks), %d sleeping, %d candidate pairs, %d contacts, %d manifold "
-              "points, largest penetration %.4g m; narrow phase: %lld fast path, %lld GJK, %lld EPA\n",
+              "points, largest penetration %.4g m; narrow phase: %lld fast path, %lld box-box, %lld GJK, %lld EPA\n",
               stats.awakeBodies, stats.lockedBodies, stats.sleepingBodies, stats.candidatePairs, stats.contacts,
-              stats.manifoldPoints, stats.largestPenetration, stats.narrowPhase.fastPath, stats.narrowPhase.gjk,
-              stats.narrowPhase.epa);
+              stats.manifoldPoints, stats.largestPenetration, stats.narrowPhase.fastPath, stats.narrowPhase.boxBox,
+              stats.narrowPhase.gjk, stats.narrowPhase.epa);
   if (stats.substeps > 0)
     std::printf("solver: %d substeps, contacts at %.4g Hz\n", stats.substeps, stats.contactHertz);
   if (parsed->has("--hash")) std::printf("state hash %s\n", hexHash(worldStateHash(world)).c_str());

@@ -17,6 +17,7 @@ StageCounters countStages(const SceneDescription& scene, int steps, const std::s
     counters.candidatePairs += stats.candidatePairs;
     counters.narrowPairs += stats.narrowPhase.pairs;
     counters.fastPath += stats.narrowPhase.fastPath;
+    counters.boxBox += stats.narrowPhase.boxBox;
     counters.gjk += stats.narrowPhase.gjk;
     counters.epa += stats.narrowPhase.epa;
     counters.manifolds += stats.manifolds;

@@ -11,6 +11,10 @@ Vec3 BoxCollider::localSupport(const Vec3& direction) const {
 
 Aabb BoxCollider::localBounds() const { return Aabb::fromCenterHalfExtents(Vec3::Zero(), halfExtents_); }
 
+Aabb BoxCollider::worldBounds(const Transform& transform) const {
+  return Aabb::fromCenterHalfExtents(transform.position, transform.rotation.toRotationMatrix().cwiseAbs() * halfExtents_);
+}
+
 double BoxCollider::volume() const { return 8.0 * halfExtents_.prod(); }
 
 Mat3 BoxCollider::unitInertia() const {

@@ -12,6 +12,10 @@ class BoxCollider final : public Collider {
   ColliderKind kind() const override { return ColliderKind::Box; }
   Vec3 localSupport(const Vec3& direction) const override;
   Aabb localBounds() const override;
+  // The box's own centre and |rotation| times its half extents: what the
+  // default computes, bit for bit, without the virtual localBounds call or
+  // rotating the (zero) local centre. The world asks this for every pair.
+  Aabb worldBounds(const Transform& transform) const override;
   double volume() const override;
   Mat3 unitInertia() const override;
 

@@ -24,6 +24,10 @@ struct ContactResult {
   int gjkIterations = 0;
   int epaIterations = 0;
   bool usedGeneralPath = false;
+  // The box-box separating-axis test decided the pair (usedGeneralPath too
+  // when it handed a separated pair to GJK for the exact distance); the
+  // manifold builder then takes the box-box route.
+  bool usedBoxBox = false;
 };
 
 // A touching or penetrating pair, as the world lists it after the narrow phase.

@@ -24,9 +24,18 @@ struct ManifoldScratch {
 };
 
 // `manifold.a` and `manifold.b` must already be set; points are overwritten.
-// Impulses are zero: warm starting is the solver's business.
+// Impulses are zero: warm starting is the solver's business. A box pair the
+// box-box narrow phase decided (result.usedBoxBox) goes to
+// buildBoxBoxManifold, which gives the same points and feature ids without
+// allocating; every other pair to buildGeneralManifold.
 void buildManifold(const Collider& a, const Transform& ta, const Collider& b, const Transform& tb,
                    const ContactResult& result, double speculativeDistance, ManifoldScratch& scratch,
                    ContactManifold& manifold);
+
+// Supporting features of any two shapes clipped in world space; the
+// reference the box-box builder is tested against.
+void buildGeneralManifold(const Collider& a, const Transform& ta, const Collider& b, const Transform& tb,
+                          const ContactResult& result, double speculativeDistance, ManifoldScratch& scratch,
+                          ContactManifold& manifold);
 
 }  // namespace physdbg

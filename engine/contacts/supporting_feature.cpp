@@ -6,6 +6,7 @@
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/convex_mesh_collider.h"
 #include "engine/colliders/sphere_collider.h"
+#include "engine/contacts/box_face.h"
 
 namespace physdbg {
 namespace {
@@ -16,25 +17,11 @@ constexpr double segmentAlignment = 0.05;
 
 void boxFace(const BoxCollider& box, const Transform& transform, const Vec3& localDirection,
              SupportingFeature& feature) {
-  int axis = 0;
-  localDirection.cwiseAbs().maxCoeff(&axis);
-  const double sign = localDirection[axis] < 0.0 ? -1.0 : 1.0;
-  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  const Vec3& h = box.halfExtents();
-  // Corners in counter-clockwise order seen from outside (along +sign*axis).
-  const double corners[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+  const BoxFace face = boxFaceAlong(box.halfExtents(), localDirection);
   feature.points.clear();
-  for (int i = 0; i < 4; ++i) {
-    Vec3 local;
-    local[axis] = sign * h[axis];
-    local[u] = corners[i][0] * h[u];
-    local[v] = corners[i][1] * h[v] * sign;
-    feature.points.push_back(transform.apply(local));
-  }
-  Vec3 localNormal = Vec3::Zero();
-  localNormal[axis] = sign;
-  feature.normal = transform.rotation * localNormal;
-  feature.index = 2 * axis + (sign < 0 ? 1 : 0);
+  for (const Vec3& corner : face.corners) feature.points.push_back(transform.apply(corner));
+  feature.normal = transform.rotation * face.normal();
+  feature.index = face.index;
 }
 
 void hullFace(const ConvexMeshCollider& hull, const Transform& transform, const Vec3& localDirection,

@@ -1,8 +1,10 @@
 #include "engine/narrowphase/narrow_phase.h"
 
+#include <optional>
 #include <stdexcept>
 
 #include "engine/narrowphase/analytic_contacts.h"
+#include "engine/narrowphase/box_box_contact.h"
 #include "engine/narrowphase/epa.h"
 #include "engine/narrowphase/gjk.h"
 
@@ -88,6 +90,16 @@ ContactResult collide(const Collider& a, const Transform& ta, const Collider& b,
   const Transform unitA{ta.position, ta.rotation.normalized()}, unitB{tb.position, tb.rotation.normalized()};
   ContactResult result;
   if (options.analyticFastPaths && tryFastPath(a, unitA, b, unitB, options.touchingTolerance, result)) return result;
+  if (options.boxBoxSat && a.kind() == ColliderKind::Box && b.kind() == ColliderKind::Box) {
+    if (std::optional<ContactResult> boxes = collideBoxes(static_cast<const BoxCollider&>(a), unitA,
+                                                          static_cast<const BoxCollider&>(b), unitB,
+                                                          options.touchingTolerance))
+      return *boxes;
+    // Separated with closest features no axis names: GJK gives the distance.
+    result = generalPath(a, unitA, b, unitB, options);
+    result.usedBoxBox = true;
+    return result;
+  }
   return generalPath(a, unitA, b, unitB, options);
 }
 

@@ -20,6 +20,9 @@ struct NarrowPhaseOptions {
   // when spent, the closest face so far is reported (a lower bound on depth).
   int maxEpaFaces = 256;
   bool analyticFastPaths = true;
+  // Box against box by separating axes (box_box_contact.h) instead of GJK +
+  // EPA; off, box pairs take the general path exactly as before it existed.
+  bool boxBoxSat = true;
 };
 
 // Per-pair tallies the world sums for its report; no global counters.
@@ -28,10 +31,12 @@ struct NarrowPhaseCounters {
   long long fastPath = 0;
   long long gjk = 0;
   long long epa = 0;
+  long long boxBox = 0;  // box pairs the separating-axis test ran on (some then also ran GJK)
 
   void add(const ContactResult& result) {
     ++pairs;
-    if (!result.usedGeneralPath) ++fastPath;
+    if (!result.usedGeneralPath && !result.usedBoxBox) ++fastPath;
+    if (result.usedBoxBox) ++boxBox;
     if (result.gjkIterations > 0) ++gjk;
     if (result.epaIterations > 0) ++epa;
   }

@@ -16,9 +16,9 @@ TEST(StageReport, SpheresOnlySceneRunsNoGjkOrEpa) {
   EXPECT_EQ(counters.primitivesEmitted, 0);
 }
 
-TEST(StageReport, BoxesRunGjkAndRequestedLayersEmitPrimitives) {
+TEST(StageReport, BoxesRunTheBoxBoxPathAndRequestedLayersEmitPrimitives) {
   const StageCounters counters = countStages(resolveScene("stack"), 5, "shapes");
-  EXPECT_GT(counters.gjk, 0);
+  EXPECT_GT(counters.boxBox, 0);
   EXPECT_GT(counters.primitivesEmitted, 0);
 }
 
