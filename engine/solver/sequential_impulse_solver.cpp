@@ -2,15 +2,25 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <numbers>
 #include <optional>
 
 #include "engine/contacts/material_combine.h"
+#include "engine/parallel/task_system.h"
+#include "engine/solver/constraint_colouring.h"
 #include "engine/solver/resting_load.h"
 
 namespace physdbg {
 namespace {
+
+bool touchesKinematic(const std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds,
+                      const ContactIsland& island) {
+  for (std::uint32_t m : island.manifolds)
+    if (bodies[manifolds[m].a].isKinematic() || bodies[manifolds[m].b].isKinematic()) return true;
+  return false;
+}
 
 // A fixed tangent basis from the normal alone, so tangent impulses stay
 // meaningful for warm starting from one step to the next.
@@ -62,11 +72,16 @@ inline double SequentialImpulseSolver::rowVelocity(const ContactManifold& manifo
 
 inline void SequentialImpulseSolver::applyRow(const ContactManifold& manifold, const PointConstraint& c,
                                               const Vec3& direction, int row, double impulse) {
+  // An immovable body takes nothing, and is not written: other threads may read it.
   SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-  a.motion.linearVelocity -= (c.inverseMassA * impulse) * direction.cwiseProduct(a.linearMask);
-  a.motion.angularVelocity -= impulse * c.turnA[row];
-  b.motion.linearVelocity += (c.inverseMassB * impulse) * direction.cwiseProduct(b.linearMask);
-  b.motion.angularVelocity += impulse * c.turnB[row];
+  if (a.movable) {
+    a.motion.linearVelocity -= (c.inverseMassA * impulse) * direction.cwiseProduct(a.linearMask);
+    a.motion.angularVelocity -= impulse * c.turnA[row];
+  }
+  if (b.movable) {
+    b.motion.linearVelocity += (c.inverseMassB * impulse) * direction.cwiseProduct(b.linearMask);
+    b.motion.angularVelocity += impulse * c.turnB[row];
+  }
 }
 
 // The normal row of a point, also added to the step's total there (what the
@@ -196,6 +211,7 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
                                                          const std::vector<bool>& movable,
                                                          std::vector<ContactManifold>& manifolds,
                                                          const StepContext& step) {
+  tasks_ = step.tasks;
   prepare(bodies, movable, manifolds);
   prepareApproaches(manifolds);
   // Touching, for holding weight: within the slop, or within a tenth of the
@@ -207,22 +223,35 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
   const std::vector<double> loads = g > 0.0 ? restingLoads(bodies, movable, manifolds, touching_, -step.gravity / g, &massScales_)
                                             : std::vector<double>(manifolds.size(), 0.0);
   lastSubstep_.resize(bodies.size(), 0.0);
-  std::vector<bool> inIsland(bodies.size(), false);
+  const std::vector<ContactIsland> islands = buildContactIslands(manifolds, movable);
+  // Each island's substeps, and its warm start rescaled to them.
+  std::vector<SubstepContext> substeps(islands.size());
+  std::vector<char> kinematic(islands.size(), 0);
+  forEach(islands.size(), 16, [&](std::size_t i) {
+    const ContactIsland& island = islands[i];
+    substeps[i] = chooseSubsteps(manifolds, island, loads, g, step);
+    kinematic[i] = touchesKinematic(bodies, manifolds, island);
+    if (!settings_.warmStarting) return;
+    rescaleWarmStart(manifolds, island, movable, substeps[i].h);
+    for (std::uint32_t m : island.manifolds) seedNewContact(manifolds[m], loads[m], touching_[m], g, substeps[i].h);
+  });
+  std::vector<IslandWork> batches = batchIslands(islands, substeps, kinematic);
+  // A batch that touches a kinematic body moves it through its own substeps
+  // (kinematicNeighbours), so those take turns; the others run side by side.
+  std::vector<std::size_t> parallel, serial;
+  for (std::size_t i = 0; i < batches.size(); ++i) (batches[i].touchesKinematic ? serial : parallel).push_back(i);
+  forEach(parallel.size(), 1, [&](std::size_t k) { runBatch(bodies, movable, manifolds, batches[parallel[k]]); });
+  for (std::size_t i : serial) runBatch(bodies, movable, manifolds, batches[i]);
+  // The report in island order.
   SolverStepReport report;
-  for (const ContactIsland& island : buildContactIslands(manifolds, movable)) {
-    const SubstepContext substeps = chooseSubsteps(manifolds, island, loads, g, step);
-    if (settings_.warmStarting) {
-      rescaleWarmStart(manifolds, island, movable, substeps.h);
-      for (std::uint32_t m : island.manifolds) seedNewContact(manifolds[m], loads[m], touching_[m], g, substeps.h);
-    }
-    solveIsland(bodies, manifolds, island, substeps);
-    for (std::uint32_t id : island.bodies) {
-      inIsland[id] = true;
-      lastSubstep_[id] = substeps.h;
-    }
-    report.largestPenetration = std::max(report.largestPenetration, largestPenetration(manifolds, island));
-    report.substeps = std::max(report.substeps, substeps.count);
-    report.contactHertz = std::max(report.contactHertz, substeps.contactHertz);
+  for (const SubstepContext& island : substeps) {
+    report.substeps = std::max(report.substeps, island.count);
+    report.contactHertz = std::max(report.contactHertz, island.contactHertz);
+  }
+  std::vector<bool> inIsland(bodies.size(), false);
+  for (const IslandWork& batch : batches) {
+    for (std::uint32_t id : batch.island.bodies) inIsland[id] = true;
+    report.largestPenetration = std::max(report.largestPenetration, batch.largestPenetration);
   }
   const SubstepContext calm =
       substepContext(step, std::max(settings_.substeps, 1), settings_.contactHertz, settings_.dampingRatio);
@@ -250,20 +279,109 @@ void SequentialImpulseSolver::integrateFreeBodies(std::vector<RigidBody>& bodies
   }
 }
 
+// Islands solved together: islands that take the same substeps share one
+// colouring, so many small ones (boxes resting alone on the floor) still
+// fill the SIMD lanes. An island that touches a kinematic body stays alone.
+// Batches follow the island order, and each keeps its manifolds ascending.
+std::vector<SequentialImpulseSolver::IslandWork> SequentialImpulseSolver::batchIslands(
+    const std::vector<ContactIsland>& islands, const std::vector<SubstepContext>& substeps,
+    const std::vector<char>& kinematic) const {
+  std::vector<IslandWork> batches;
+  std::map<std::pair<int, double>, std::size_t> open;  // by substep count and frequency
+  for (std::size_t i = 0; i < islands.size(); ++i) {
+    std::size_t index = batches.size();
+    if (!kinematic[i]) index = open.try_emplace({substeps[i].count, substeps[i].contactHertz}, index).first->second;
+    if (index == batches.size()) {
+      batches.emplace_back().substeps = substeps[i];
+      batches.back().touchesKinematic = kinematic[i] != 0;
+    }
+    ContactIsland& batch = batches[index].island;
+    batch.manifolds.insert(batch.manifolds.end(), islands[i].manifolds.begin(), islands[i].manifolds.end());
+    batch.bodies.insert(batch.bodies.end(), islands[i].bodies.begin(), islands[i].bodies.end());
+  }
+  for (IslandWork& batch : batches) {
+    std::sort(batch.island.manifolds.begin(), batch.island.manifolds.end());
+    std::sort(batch.island.bodies.begin(), batch.island.bodies.end());
+  }
+  return batches;
+}
+
+// One batch of islands, start to end: colours, the solve, the figures.
+void SequentialImpulseSolver::runBatch(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                                       std::vector<ContactManifold>& manifolds, IslandWork& work) {
+  planIsland(work, manifolds, movable);
+  solveIsland(bodies, manifolds, work);
+  for (std::uint32_t id : work.island.bodies) lastSubstep_[id] = work.substeps.h;
+  work.largestPenetration = largestPenetration(manifolds, work.island);
+}
+
+// Colours, and each colour's manifolds packed simd::width to a group (the
+// speculative manifolds solved all points together stay single).
+void SequentialImpulseSolver::planIsland(IslandWork& work, const std::vector<ContactManifold>& manifolds,
+                                         const std::vector<bool>& movable) {
+  ConstraintColouring colouring = colourConstraints(manifolds, work.island.manifolds, movable);
+  work.overflow = std::move(colouring.overflow);
+  work.colours.assign(colouring.colours.size(), ColourWork{});
+  work.groups.reserve(work.island.manifolds.size() / simd::width + colouring.colours.size());
+  std::vector<std::uint32_t> wide;
+  for (std::size_t c = 0; c < colouring.colours.size(); ++c) {
+    ColourWork& colour = work.colours[c];
+    wide.clear();
+    for (std::uint32_t m : colouring.colours[c])
+      (settings_.wideContacts && !approaching_[m] ? wide : colour.scalar).push_back(m);
+    colour.firstGroup = work.groups.size();
+    for (std::size_t i = 0; i < wide.size(); i += simd::width) {
+      const int count = static_cast<int>(std::min<std::size_t>(simd::width, wide.size() - i));
+      work.groups.push_back(packWideManifolds(&wide[i], count, manifolds, constraints_, solverBodies_));
+    }
+    colour.groupCount = work.groups.size() - colour.firstGroup;
+  }
+}
+
+void SequentialImpulseSolver::forEach(std::size_t count, std::size_t grain,
+                                      const std::function<void(std::size_t)>& body) const {
+  if (!tasks_ || tasks_->threadCount() <= 1 || count <= grain) {
+    for (std::size_t i = 0; i < count; ++i) body(i);
+    return;
+  }
+  tasks_->parallelFor(count, grain, [&body](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) body(i);
+  });
+}
+
+void SequentialImpulseSolver::runColours(IslandWork& work, const std::function<void(WideManifolds&)>& wide,
+                                         const std::function<void(std::uint32_t)>& single) const {
+  // A piece of a colour should outweigh handing it to another thread.
+  constexpr std::size_t grain = 32;
+  for (const ColourWork& colour : work.colours) {
+    forEach(colour.groupCount + colour.scalar.size(), grain, [&](std::size_t i) {
+      if (i < colour.groupCount)
+        wide(work.groups[colour.firstGroup + i]);
+      else
+        single(colour.scalar[i - colour.groupCount]);
+    });
+  }
+  for (std::uint32_t m : work.overflow) single(m);
+}
+
 void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
-                                          const ContactIsland& island, const SubstepContext& substeps) {
-  const std::vector<std::uint32_t> kinematic = kinematicNeighbours(bodies, manifolds, island);
-  measureGaps(manifolds, island);
+                                          IslandWork& work) {
+  const ContactIsland& island = work.island;
+  const SubstepContext& substeps = work.substeps;
+  const std::vector<std::uint32_t> kinematic =
+      work.touchesKinematic ? kinematicNeighbours(bodies, manifolds, island) : std::vector<std::uint32_t>{};
+  measureGaps(manifolds, work);
   for (int substep = 0; substep < substeps.count; ++substep) {
     integrateVelocities(island, substeps.h);
-    if (settings_.warmStarting) warmStart(manifolds, island);
+    if (settings_.warmStarting) warmStart(manifolds, work);
     for (int iteration = 0; iteration < settings_.velocityIterations; ++iteration)
-      solve(manifolds, island, substeps, true, (substep + iteration) % 2 == 1);
+      solve(manifolds, work, true, (substep + iteration) % 2 == 1);
     integratePositions(island.bodies, substeps.h);
     integratePositions(kinematic, substeps.h);
-    measureGaps(manifolds, island);
-    solve(manifolds, island, substeps, false, substep % 2 == 0);
+    measureGaps(manifolds, work);
+    solve(manifolds, work, false, substep % 2 == 0);
   }
+  for (const WideManifolds& group : work.groups) storeWideImpulses(group, manifolds, constraints_);
   applyRestitution(manifolds, island);
   for (std::uint32_t id : island.bodies) bodies[id].setMotion(solverBodies_[id].motion);
 }
@@ -332,7 +450,6 @@ void SequentialImpulseSolver::rescaleWarmStart(std::vector<ContactManifold>& man
 
 void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                       std::vector<ContactManifold>& manifolds) {
-  const SolverSettings& settings = settings_;
   solverBodies_.resize(bodies.size());
   motionProperties_.resize(bodies.size());
   std::vector<bool> listed(bodies.size(), false);
@@ -342,6 +459,7 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
       listed[id] = true;
       SolverBody& body = solverBodies_[id];
       const RigidBody& source = bodies[id];
+      body.movable = movable[id];
       body.inverseMass = movable[id] ? source.inverseMass() : 0.0;
       body.inverseInertia = movable[id] ? source.worldInverseInertia() : Mat3::Zero();
       for (int axis = 0; axis < 3; ++axis) {
@@ -358,54 +476,60 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
   }
   constraints_.resize(manifolds.size() * ContactManifold::maxPoints);
   massScales_ = supportMassScales(manifolds);
-  const std::vector<std::pair<double, double>>& scales = massScales_;
-  for (std::size_t m = 0; m < manifolds.size(); ++m) {
-    ContactManifold& manifold = manifolds[m];
-    const RigidBody &a = bodies[manifold.a], &b = bodies[manifold.b];
-    const SolverBody &bodyA = solverBodies_[manifold.a], &bodyB = solverBodies_[manifold.b];
-    const auto [scaleA, scaleB] = scales[m];
-    const double inverseMassA = scaleA * bodyA.inverseMass, inverseMassB = scaleB * bodyB.inverseMass;
-    const Mat3 inverseInertiaA = scaleA * bodyA.inverseInertia, inverseInertiaB = scaleB * bodyB.inverseInertia;
-    const double inverseMassSum = inverseMassA + inverseMassB;
-    const CombinedMaterial material =
-        combineMaterials(a.material(), b.material(), settings.restitutionCombine(), settings.frictionCombine());
-    for (int p = 0; p < manifold.pointCount; ++p) {
-      ManifoldPoint& point = manifold.points[p];
-      PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-      // Touching or overlapping, both bodies push at the midpoint. A
-      // speculative point may still be metres from the other body; there
-      // each pushes at its own surface, or friction gets a long lever.
-      const bool apart = point.separation > settings.linearSlop;
-      const Vec3 middle = 0.5 * (point.pointA + point.pointB);
-      c.armA = (apart ? point.pointA : middle) - a.position();
-      c.armB = (apart ? point.pointB : middle) - b.position();
-      tangentBasis(manifold.normal, c.tangent[0], c.tangent[1]);
-      const Vec3 directions[3] = {manifold.normal, c.tangent[0], c.tangent[1]};
-      for (int row = 0; row < 3; ++row) {
-        c.crossA[row] = c.armA.cross(directions[row]);
-        c.crossB[row] = c.armB.cross(directions[row]);
-        c.turnA[row] = (inverseInertiaA * c.crossA[row]).cwiseProduct(bodyA.angularMask);
-        c.turnB[row] = (inverseInertiaB * c.crossB[row]).cwiseProduct(bodyB.angularMask);
-      }
-      c.inverseMassA = inverseMassA;
-      c.inverseMassB = inverseMassB;
-      c.normalMass = effectiveMass(inverseMassSum, inverseInertiaA, inverseInertiaB, c.armA, c.armB, manifold.normal);
-      for (int t = 0; t < 2; ++t)
-        c.tangentMass[t] = effectiveMass(inverseMassSum, inverseInertiaA, inverseInertiaB, c.armA, c.armB, c.tangent[t]);
-      const Vec3 relative = relativeVelocity(manifold, c);
-      c.approachVelocity = relative.dot(manifold.normal);
-      const double slidingSpeed = (relative - c.approachVelocity * manifold.normal).norm();
-      c.friction = slidingSpeed < settings.stickingSpeed ? material.staticFriction : material.dynamicFriction;
-      c.restitution = c.approachVelocity < -settings.restitutionThreshold ? material.restitution : 0.0;
-      c.largestImpulse = 0.0;
-      point.stepNormalImpulse = 0.0;
-      if (!settings.warmStarting) point.normalImpulse = point.tangentImpulse[0] = point.tangentImpulse[1] = 0.0;
+  forEach(manifolds.size(), 256, [&](std::size_t m) { prepareManifold(bodies, manifolds[m], m); });
+}
+
+void SequentialImpulseSolver::prepareManifold(const std::vector<RigidBody>& bodies, ContactManifold& manifold,
+                                              std::size_t m) {
+  const SolverSettings& settings = settings_;
+  const std::pair<double, double> scale = massScales_[m];
+  const RigidBody &a = bodies[manifold.a], &b = bodies[manifold.b];
+  const SolverBody &bodyA = solverBodies_[manifold.a], &bodyB = solverBodies_[manifold.b];
+  const auto [scaleA, scaleB] = scale;
+  const double inverseMassA = scaleA * bodyA.inverseMass, inverseMassB = scaleB * bodyB.inverseMass;
+  const Mat3 inverseInertiaA = scaleA * bodyA.inverseInertia, inverseInertiaB = scaleB * bodyB.inverseInertia;
+  const double inverseMassSum = inverseMassA + inverseMassB;
+  const CombinedMaterial material =
+      combineMaterials(a.material(), b.material(), settings.restitutionCombine(), settings.frictionCombine());
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    ManifoldPoint& point = manifold.points[p];
+    PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    // Touching or overlapping, both bodies push at the midpoint. A
+    // speculative point may still be metres from the other body; there
+    // each pushes at its own surface, or friction gets a long lever.
+    const bool apart = point.separation > settings.linearSlop;
+    const Vec3 middle = 0.5 * (point.pointA + point.pointB);
+    c.armA = (apart ? point.pointA : middle) - a.position();
+    c.armB = (apart ? point.pointB : middle) - b.position();
+    tangentBasis(manifold.normal, c.tangent[0], c.tangent[1]);
+    const Vec3 directions[3] = {manifold.normal, c.tangent[0], c.tangent[1]};
+    for (int row = 0; row < 3; ++row) {
+      c.crossA[row] = c.armA.cross(directions[row]);
+      c.crossB[row] = c.armB.cross(directions[row]);
+      c.turnA[row] = (inverseInertiaA * c.crossA[row]).cwiseProduct(bodyA.angularMask);
+      c.turnB[row] = (inverseInertiaB * c.crossB[row]).cwiseProduct(bodyB.angularMask);
     }
+    c.inverseMassA = inverseMassA;
+    c.inverseMassB = inverseMassB;
+    c.normalMass = effectiveMass(inverseMassSum, inverseInertiaA, inverseInertiaB, c.armA, c.armB, manifold.normal);
+    for (int t = 0; t < 2; ++t)
+      c.tangentMass[t] = effectiveMass(inverseMassSum, inverseInertiaA, inverseInertiaB, c.armA, c.armB, c.tangent[t]);
+    const Vec3 relative = relativeVelocity(manifold, c);
+    c.approachVelocity = relative.dot(manifold.normal);
+    const double slidingSpeed = (relative - c.approachVelocity * manifold.normal).norm();
+    c.friction = slidingSpeed < settings.stickingSpeed ? material.staticFriction : material.dynamicFriction;
+    c.restitution = c.approachVelocity < -settings.restitutionThreshold ? material.restitution : 0.0;
+    c.largestImpulse = 0.0;
+    point.stepNormalImpulse = 0.0;
+    if (!settings.warmStarting) point.normalImpulse = point.tangentImpulse[0] = point.tangentImpulse[1] = 0.0;
   }
 }
 
 void SequentialImpulseSolver::integrateVelocities(const ContactIsland& island, double h) {
-  for (std::uint32_t id : island.bodies) integrateVelocity(solverBodies_[id].motion, motionProperties_[id], h);
+  forEach(island.bodies.size(), 256, [&](std::size_t i) {
+    const std::uint32_t id = island.bodies[i];
+    integrateVelocity(solverBodies_[id].motion, motionProperties_[id], h);
+  });
 }
 
 // Kinematic bodies move on their own through the step (World moves them after
@@ -428,33 +552,39 @@ std::vector<std::uint32_t> SequentialImpulseSolver::kinematicNeighbours(const st
 }
 
 void SequentialImpulseSolver::integratePositions(const std::vector<std::uint32_t>& ids, double h) {
-  for (std::uint32_t id : ids) {
-    SolverBody& body = solverBodies_[id];
+  forEach(ids.size(), 256, [&](std::size_t i) {
+    SolverBody& body = solverBodies_[ids[i]];
     integratePosition(body.motion, h);
     body.rotation = body.motion.orientation.toRotationMatrix();
-  }
+  });
 }
 
 // Poses change only when positions are integrated, once per substep, so the
 // gaps are measured then and shared by every sweep until the next move.
-void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) {
-  for (std::uint32_t m : island.manifolds) {
+void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& manifolds, IslandWork& work) {
+  const std::vector<std::uint32_t>& ids = work.island.manifolds;
+  forEach(ids.size(), 256, [&](std::size_t i) {
+    const std::uint32_t m = ids[i];
     const ContactManifold& manifold = manifolds[m];
     for (int p = 0; p < manifold.pointCount; ++p)
       constraints_[m * ContactManifold::maxPoints + p].gap = separation(manifold, manifold.points[p]);
-  }
+  });
+  forEach(work.groups.size(), 64, [&](std::size_t g) { loadWideGaps(work.groups[g], constraints_); });
 }
 
-void SequentialImpulseSolver::warmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island) {
-  for (std::uint32_t m : island.manifolds) {
-    ContactManifold& manifold = manifolds[m];
-    for (int p = 0; p < manifold.pointCount; ++p) {
-      ManifoldPoint& point = manifold.points[p];
-      const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-      applyNormal(manifold, c, point, point.normalImpulse);
-      applyRow(manifold, c, c.tangent[0], 1, point.tangentImpulse[0]);
-      applyRow(manifold, c, c.tangent[1], 2, point.tangentImpulse[1]);
-    }
+void SequentialImpulseSolver::warmStart(std::vector<ContactManifold>& manifolds, IslandWork& work) {
+  runColours(
+      work, [this](WideManifolds& group) { warmStartWide(group, solverBodies_); },
+      [&](std::uint32_t m) { warmStartManifold(manifolds[m], m); });
+}
+
+void SequentialImpulseSolver::warmStartManifold(ContactManifold& manifold, std::size_t m) {
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    ManifoldPoint& point = manifold.points[p];
+    const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    applyNormal(manifold, c, point, point.normalImpulse);
+    applyRow(manifold, c, c.tangent[0], 1, point.tangentImpulse[0]);
+    applyRow(manifold, c, c.tangent[1], 2, point.tangentImpulse[1]);
   }
 }
 
@@ -559,14 +689,18 @@ void SequentialImpulseSolver::prepareApproaches(const std::vector<ContactManifol
 // Every other sweep visits the points of each manifold in reverse: a fixed
 // order hands the first corner the largest share of every correction, which
 // tilts a stack the same way step after step until it walks sideways.
-void SequentialImpulseSolver::solve(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
-                                    const SubstepContext& substeps, bool useBias, bool reversed) {
-  for (std::uint32_t m : island.manifolds) {
-    ContactManifold& manifold = manifolds[m];
-    if (!(approaching_[m] && solveApproachTogether(manifold, m, substeps.h)))
-      solveNormals(manifold, m, substeps, useBias, reversed);
-    solveFriction(manifold, m, reversed);
-  }
+void SequentialImpulseSolver::solve(std::vector<ContactManifold>& manifolds, IslandWork& work, bool useBias,
+                                    bool reversed) {
+  const SubstepContext& substeps = work.substeps;
+  const WideSweep sweep{&substeps, settings_.maxPushSpeed, useBias, reversed};
+  runColours(
+      work, [this, &sweep](WideManifolds& group) { solveWide(group, solverBodies_, sweep); },
+      [&](std::uint32_t m) {
+        ContactManifold& manifold = manifolds[m];
+        if (!(approaching_[m] && solveApproachTogether(manifold, m, substeps.h)))
+          solveNormals(manifold, m, substeps, useBias, reversed);
+        solveFriction(manifold, m, reversed);
+      });
 }
 
 void SequentialImpulseSolver::solveFriction(ContactManifold& manifold, std::size_t m, bool reversed) {

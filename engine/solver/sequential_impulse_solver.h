@@ -14,11 +14,26 @@
 // more substeps) until the most loaded one settles within restingOverlap,
 // and starts new contacts at their load. This is decided per island
 // (contact_islands.h), so only the pile that needs it pays for it.
+//
+// Order and threads: islands that take the same substeps are solved as one
+// batch (a thousand boxes resting alone on the floor are one batch), whose
+// manifolds are coloured (constraint_colouring.h) so that a colour's
+// manifolds share no movable body. Sweeps go colour by colour, solving a
+// colour's manifolds side by side in SIMD lanes (wide_contact_rows.h) and
+// over the world's threads, then the few that fit no colour one by one.
+// Batches run in parallel too (an island touching a kinematic body, which it
+// moves through its own substeps, is a batch of its own; those take turns).
+// Nothing depends on how work is split: any thread count gives the same
+// result bit for bit.
+#include <functional>
 #include <vector>
 
 #include "engine/contacts/manifold_builder.h"
 #include "engine/solver/contact_islands.h"
 #include "engine/solver/contact_solver.h"
+#include "engine/solver/point_constraint.h"
+#include "engine/solver/solver_body.h"
+#include "engine/solver/wide_contact_rows.h"
 
 namespace physdbg {
 
@@ -54,34 +69,23 @@ class SequentialImpulseSolver final : public ContactSolver {
   SolverStepReport solveManifolds(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                   std::vector<ContactManifold>& manifolds, const StepContext& step);
 
-  // Rows of a contact point: 0 the normal, 1 and 2 the tangents. For each,
-  // the arm crossed with the direction and the angular velocity change a unit
-  // impulse causes (inverse inertia applied, locked axes zeroed) are kept,
-  // so the inner loop does no matrix products.
-  struct PointConstraint {
-    Vec3 armA, armB;  // from the centres of mass at the start of the step
-    Vec3 tangent[2];
-    Vec3 crossA[3], crossB[3];
-    Vec3 turnA[3], turnB[3];
-    double normalMass = 0, tangentMass[2] = {0, 0};
-    double friction = 0;
-    double approachVelocity = 0;  // normal velocity before the solve, for restitution
-    double restitution = 0;
-    double largestImpulse = 0;  // did this point ever push (restitution needs it)
-    double gap = 0;             // separation at the current poses (measureGaps)
-    double inverseMassA = 0, inverseMassB = 0;  // the bodies' inverse masses, as scaled for this contact
+  // One batch of islands' work this step (islands with the same substeps
+  // are solved together, batchIslands): its substeps, its colours (each a list of
+  // wide groups plus the manifolds solved one by one: the speculative ones
+  // solved all points together, or all of them with wideContacts off) and
+  // the overflow, solved one by one after the colours.
+  struct ColourWork {
+    std::size_t firstGroup = 0, groupCount = 0;  // in IslandWork::groups
+    std::vector<std::uint32_t> scalar;
   };
-  // The solver's working copy of a body: its motion, integrated here through
-  // every substep and written back to the RigidBody once per island, the
-  // rotation matrix used to measure gaps, the inverse mass and the lock
-  // masks, so the inner loop touches one struct per body.
-  struct SolverBody {
-    BodyMotion motion;
-    Mat3 rotation = Mat3::Identity();
-    Mat3 inverseInertia = Mat3::Zero();
-    Vec3 linearMask = Vec3::Ones(), angularMask = Vec3::Ones();  // 0 on locked axes
-    double inverseMass = 0;
-    double size = 0;  // middle extent of the collider's box, m
+  struct IslandWork {
+    ContactIsland island;
+    SubstepContext substeps;
+    std::vector<ColourWork> colours;
+    std::vector<std::uint32_t> overflow;
+    std::vector<WideManifolds> groups;
+    bool touchesKinematic = false;
+    double largestPenetration = 0.0;
   };
 
   SubstepContext chooseSubsteps(const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
@@ -91,8 +95,19 @@ class SequentialImpulseSolver final : public ContactSolver {
                         const std::vector<bool>& movable, double substep) const;
   void integrateFreeBodies(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                            const std::vector<bool>& inIsland, const SubstepContext& substeps);
-  void solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds, const ContactIsland& island,
-                   const SubstepContext& substeps);
+  std::vector<IslandWork> batchIslands(const std::vector<ContactIsland>& islands,
+                                       const std::vector<SubstepContext>& substeps,
+                                       const std::vector<char>& kinematic) const;
+  void runBatch(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+                std::vector<ContactManifold>& manifolds, IslandWork& work);
+  void planIsland(IslandWork& work, const std::vector<ContactManifold>& manifolds, const std::vector<bool>& movable);
+  void solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds, IslandWork& work);
+  // body(i) for i in [0, count), spread over the world's threads when there
+  // is enough work; each i must write only what it owns.
+  void forEach(std::size_t count, std::size_t grain, const std::function<void(std::size_t)>& body) const;
+  // Each colour's wide groups and single manifolds (in parallel), then the overflow.
+  void runColours(IslandWork& work, const std::function<void(WideManifolds&)>& wide,
+                  const std::function<void(std::uint32_t)>& single) const;
   void prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                std::vector<ContactManifold>& manifolds);
   // Per manifold, the factors on a's and b's inverse mass and inertia: 1,
@@ -103,16 +118,17 @@ class SequentialImpulseSolver final : public ContactSolver {
   std::vector<std::uint32_t> kinematicNeighbours(const std::vector<RigidBody>& bodies,
                                                  const std::vector<ContactManifold>& manifolds,
                                                  const ContactIsland& island);
-  void measureGaps(const std::vector<ContactManifold>& manifolds, const ContactIsland& island);
-  void warmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island);
+  void measureGaps(const std::vector<ContactManifold>& manifolds, IslandWork& work);
+  void warmStart(std::vector<ContactManifold>& manifolds, IslandWork& work);
+  void warmStartManifold(ContactManifold& manifold, std::size_t m);
+  void prepareManifold(const std::vector<RigidBody>& bodies, ContactManifold& manifold, std::size_t m);
   void prepareApproaches(const std::vector<ContactManifold>& manifolds);
   // useBias: the soft push-out of overlap (off in the relax pass after positions moved).
   void solveNormals(ContactManifold& manifold, std::size_t m, const SubstepContext& substeps, bool useBias,
                     bool reversed);
   bool solveApproachTogether(ContactManifold& manifold, std::size_t m, double substep);
   void solveFriction(ContactManifold& manifold, std::size_t m, bool reversed);
-  void solve(std::vector<ContactManifold>& manifolds, const ContactIsland& island, const SubstepContext& substeps,
-             bool useBias, bool reversed);
+  void solve(std::vector<ContactManifold>& manifolds, IslandWork& work, bool useBias, bool reversed);
   void applyRestitution(std::vector<ContactManifold>& manifolds, const ContactIsland& island);
   double largestPenetration(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
   double separation(const ContactManifold& manifold, const ManifoldPoint& point) const;
@@ -141,6 +157,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   std::vector<Eigen::Matrix4d> approachInverse_;  // and its pseudo-inverse
   std::vector<double> lastSubstep_;               // per body: the substep it took last step (0: none yet)
   std::vector<std::pair<double, double>> massScales_;  // per manifold, from supportMassScales
+  const TaskSystem* tasks_ = nullptr;  // this step's threads (StepContext::tasks)
 };
 
 }  // namespace physdbg

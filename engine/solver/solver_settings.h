@@ -52,6 +52,10 @@ struct SolverSettings {
   int substeps = 8;
   int velocityIterations = 2;
   bool warmStarting = true;
+  // Solve each colour's manifolds simd::width at a time in SIMD lanes
+  // (wide_contact_rows.h); off, one by one in the same order. Same answer up
+  // to rounding; the switch is there to compare them.
+  bool wideContacts = true;
   // Soft contact: overlap is pushed out like a spring of this frequency
   // (never above a quarter of the substep rate, where it would ring) and
   // damping ratio, at most maxPushSpeed. Position error never becomes bounce:

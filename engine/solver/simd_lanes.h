@@ -1,0 +1,44 @@
+#pragma once
+// Doubles side by side in one SIMD register, for the wide contact solve
+// (wide_contact_rows.h): the few operations it needs, over Eigen's packet
+// types so the code is the same on every instruction set. The width follows
+// the compiler's target: 4 lanes with AVX (CMake's PHYSDBG_SIMD=avx2, the
+// default), 2 with plain SSE2 (PHYSDBG_SIMD=sse2), 1 without vectorization.
+// Each operation rounds exactly as the scalar one it stands for, so the wide
+// solve matches the scalar one up to the order of a few sums.
+#include <Eigen/Core>
+
+namespace physdbg::simd {
+
+using Packet = Eigen::internal::packet_traits<double>::type;
+inline constexpr int width = static_cast<int>(sizeof(Packet) / sizeof(double));
+
+struct Lanes {
+  Packet value;
+
+  static Lanes all(double x) { return {Eigen::internal::pset1<Packet>(x)}; }
+  static Lanes zero() { return all(0.0); }
+  static Lanes load(const double* from) { return {Eigen::internal::ploadu<Packet>(from)}; }
+  void store(double* to) const { Eigen::internal::pstoreu(to, value); }
+};
+
+inline Lanes operator+(Lanes a, Lanes b) { return {Eigen::internal::padd(a.value, b.value)}; }
+inline Lanes operator-(Lanes a, Lanes b) { return {Eigen::internal::psub(a.value, b.value)}; }
+inline Lanes operator*(Lanes a, Lanes b) { return {Eigen::internal::pmul(a.value, b.value)}; }
+inline Lanes operator/(Lanes a, Lanes b) { return {Eigen::internal::pdiv(a.value, b.value)}; }
+inline Lanes operator-(Lanes a) { return {Eigen::internal::pnegate(a.value)}; }
+inline Lanes& operator+=(Lanes& a, Lanes b) { return a = a + b; }
+inline Lanes& operator-=(Lanes& a, Lanes b) { return a = a - b; }
+
+// As std::max(a, b) and std::min(a, b) lane by lane (a when they compare equal).
+inline Lanes max(Lanes a, Lanes b) { return {Eigen::internal::pselect(Eigen::internal::pcmp_lt(a.value, b.value), b.value, a.value)}; }
+inline Lanes min(Lanes a, Lanes b) { return {Eigen::internal::pselect(Eigen::internal::pcmp_lt(b.value, a.value), b.value, a.value)}; }
+inline Lanes sqrt(Lanes a) { return {Eigen::internal::psqrt(a.value)}; }
+
+// Masks: all bits set in a lane where the comparison holds.
+inline Lanes greater(Lanes a, Lanes b) { return {Eigen::internal::pcmp_lt(b.value, a.value)}; }
+inline Lanes both(Lanes a, Lanes b) { return {Eigen::internal::pand(a.value, b.value)}; }
+// Lane by lane: `yes` where `mask` is set, else `no`.
+inline Lanes select(Lanes mask, Lanes yes, Lanes no) { return {Eigen::internal::pselect(mask.value, yes.value, no.value)}; }
+
+}  // namespace physdbg::simd

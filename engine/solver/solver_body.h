@@ -1,0 +1,24 @@
+#pragma once
+// The sequential-impulse solver's working copy of a body: its motion,
+// integrated through every substep and written back to the RigidBody once
+// per island, the rotation matrix used to measure gaps, the inverse mass and
+// the lock masks, so the inner loops touch one struct per body.
+#include "engine/dynamics/motion.h"
+#include "engine/math.h"
+
+namespace physdbg {
+
+struct SolverBody {
+  BodyMotion motion;
+  Mat3 rotation = Mat3::Identity();
+  Mat3 inverseInertia = Mat3::Zero();
+  Vec3 linearMask = Vec3::Ones(), angularMask = Vec3::Ones();  // 0 on locked axes
+  double inverseMass = 0;
+  double size = 0;  // middle extent of the collider's box, m
+  // False for static, kinematic, sleeping and frozen bodies: impulses leave
+  // them alone, so manifolds of other islands or colours may share them
+  // while those run on other threads (nothing writes them).
+  bool movable = false;
+};
+
+}  // namespace physdbg

@@ -1,0 +1,226 @@
+#include "engine/solver/wide_contact_rows.h"
+
+#include <cstring>
+
+namespace physdbg {
+namespace {
+
+using simd::Lanes;
+constexpr int lanes = simd::width;
+constexpr int slots = ContactManifold::maxPoints;
+
+void setLane(Lanes& target, int lane, double value) {
+  std::memcpy(reinterpret_cast<char*>(&target) + lane * sizeof(double), &value, sizeof value);
+}
+
+double getLane(const Lanes& source, int lane) {
+  double value;
+  std::memcpy(&value, reinterpret_cast<const char*>(&source) + lane * sizeof(double), sizeof value);
+  return value;
+}
+
+void setLanes(Lanes (&target)[3], int lane, const Vec3& value) {
+  for (int axis = 0; axis < 3; ++axis) setLane(target[axis], lane, value[axis]);
+}
+
+// The velocities of one side's bodies, lane by lane (zero in empty lanes).
+struct LaneVelocities {
+  Lanes linear[3], angular[3];
+};
+
+LaneVelocities gather(const std::array<std::uint32_t, lanes>& ids, const std::vector<SolverBody>& bodies) {
+  alignas(64) double values[6][lanes] = {};
+  for (int lane = 0; lane < lanes; ++lane) {
+    if (ids[lane] == WideManifolds::empty) continue;
+    const BodyMotion& motion = bodies[ids[lane]].motion;
+    for (int axis = 0; axis < 3; ++axis) {
+      values[axis][lane] = motion.linearVelocity[axis];
+      values[3 + axis][lane] = motion.angularVelocity[axis];
+    }
+  }
+  LaneVelocities result;
+  for (int axis = 0; axis < 3; ++axis) {
+    result.linear[axis] = Lanes::load(values[axis]);
+    result.angular[axis] = Lanes::load(values[3 + axis]);
+  }
+  return result;
+}
+
+// Only movable bodies are written: an immovable one (the floor) may sit in
+// several lanes, groups and islands at once, and its velocity never changes.
+void scatter(const LaneVelocities& velocities, const std::array<std::uint32_t, lanes>& ids,
+             std::vector<SolverBody>& bodies) {
+  alignas(64) double values[6][lanes];
+  for (int axis = 0; axis < 3; ++axis) {
+    velocities.linear[axis].store(values[axis]);
+    velocities.angular[axis].store(values[3 + axis]);
+  }
+  for (int lane = 0; lane < lanes; ++lane) {
+    if (ids[lane] == WideManifolds::empty || !bodies[ids[lane]].movable) continue;
+    BodyMotion& motion = bodies[ids[lane]].motion;
+    for (int axis = 0; axis < 3; ++axis) {
+      motion.linearVelocity[axis] = values[axis][lane];
+      motion.angularVelocity[axis] = values[3 + axis][lane];
+    }
+  }
+}
+
+Lanes dot(const Lanes (&x)[3], const Lanes (&y)[3]) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
+
+// The relative velocity along a row, as the scalar solver's rowVelocity.
+Lanes rowVelocity(const LaneVelocities& a, const LaneVelocities& b, const WideManifolds& group, const WidePoint& point,
+                  int row) {
+  Lanes difference[3];
+  for (int axis = 0; axis < 3; ++axis) difference[axis] = b.linear[axis] - a.linear[axis];
+  return dot(difference, group.direction[row]) + dot(b.angular, point.crossB[row]) - dot(a.angular, point.crossA[row]);
+}
+
+void applyRow(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, const WidePoint& point, int row,
+              Lanes impulse) {
+  const Lanes linearA = group.inverseMassA * impulse, linearB = group.inverseMassB * impulse;
+  for (int axis = 0; axis < 3; ++axis) {
+    a.linear[axis] -= linearA * (group.direction[row][axis] * group.linearMaskA[axis]);
+    a.angular[axis] -= impulse * point.turnA[row][axis];
+    b.linear[axis] += linearB * (group.direction[row][axis] * group.linearMaskB[axis]);
+    b.angular[axis] += impulse * point.turnB[row][axis];
+  }
+}
+
+void applyNormal(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, WidePoint& point, Lanes impulse) {
+  applyRow(a, b, group, point, 0, impulse);
+  point.stepNormalImpulse += impulse;
+}
+
+void solveNormal(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, WidePoint& point,
+                 const WideSweep& sweep) {
+  const Softness& softness = sweep.substeps->softness;
+  const Lanes zero = Lanes::zero(), one = Lanes::all(1.0);
+  const Lanes apart = simd::greater(point.gap, zero);
+  const Lanes closing = point.gap / Lanes::all(sweep.substeps->h);
+  Lanes bias = simd::select(apart, closing, zero), massScale = one, impulseScale = zero;
+  if (sweep.useBias) {
+    const Lanes push = simd::max(Lanes::all(softness.biasRate) * point.gap, Lanes::all(-sweep.maxPushSpeed));
+    bias = simd::select(apart, closing, push);
+    massScale = simd::select(apart, one, Lanes::all(softness.massScale));
+    impulseScale = simd::select(apart, zero, Lanes::all(softness.impulseScale));
+  }
+  const Lanes normalVelocity = rowVelocity(a, b, group, point, 0);
+  const Lanes impulse = -point.normalMass * massScale * (normalVelocity + bias) - impulseScale * point.normalImpulse;
+  const Lanes total = simd::max(point.normalImpulse + impulse, zero);
+  applyNormal(a, b, group, point, total - point.normalImpulse);
+  point.normalImpulse = total;
+  point.largestImpulse = simd::max(point.largestImpulse, total);
+}
+
+void solveFriction(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, WidePoint& point) {
+  Lanes tangent[2];
+  for (int t = 0; t < 2; ++t)
+    tangent[t] = point.tangentImpulse[t] - point.tangentMass[t] * rowVelocity(a, b, group, point, t + 1);
+  const Lanes limit = point.friction * point.normalImpulse;
+  const Lanes squared = tangent[0] * tangent[0] + tangent[1] * tangent[1];
+  const Lanes clamp = simd::both(simd::greater(squared, limit * limit), simd::greater(squared, Lanes::zero()));
+  const Lanes scale = limit / simd::sqrt(simd::select(clamp, squared, Lanes::all(1.0)));
+  for (int t = 0; t < 2; ++t) tangent[t] = simd::select(clamp, tangent[t] * scale, tangent[t]);
+  applyRow(a, b, group, point, 1, tangent[0] - point.tangentImpulse[0]);
+  applyRow(a, b, group, point, 2, tangent[1] - point.tangentImpulse[1]);
+  point.tangentImpulse[0] = tangent[0];
+  point.tangentImpulse[1] = tangent[1];
+}
+
+void packPoint(WidePoint& wide, int lane, const PointConstraint& c, const ManifoldPoint& point) {
+  for (int row = 0; row < 3; ++row) {
+    setLanes(wide.crossA[row], lane, c.crossA[row]);
+    setLanes(wide.crossB[row], lane, c.crossB[row]);
+    setLanes(wide.turnA[row], lane, c.turnA[row]);
+    setLanes(wide.turnB[row], lane, c.turnB[row]);
+  }
+  setLane(wide.normalMass, lane, c.normalMass);
+  setLane(wide.tangentMass[0], lane, c.tangentMass[0]);
+  setLane(wide.tangentMass[1], lane, c.tangentMass[1]);
+  setLane(wide.friction, lane, c.friction);
+  setLane(wide.gap, lane, c.gap);
+  setLane(wide.largestImpulse, lane, c.largestImpulse);
+  setLane(wide.normalImpulse, lane, point.normalImpulse);
+  setLane(wide.tangentImpulse[0], lane, point.tangentImpulse[0]);
+  setLane(wide.tangentImpulse[1], lane, point.tangentImpulse[1]);
+  setLane(wide.stepNormalImpulse, lane, point.stepNormalImpulse);
+}
+
+}  // namespace
+
+WideManifolds packWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
+                                const std::vector<PointConstraint>& constraints,
+                                const std::vector<SolverBody>& bodies) {
+  WideManifolds group{};
+  group.manifold.fill(WideManifolds::empty);
+  group.bodyA.fill(WideManifolds::empty);
+  group.bodyB.fill(WideManifolds::empty);
+  for (int lane = 0; lane < count && lane < lanes; ++lane) {
+    const std::uint32_t m = members[lane];
+    const ContactManifold& manifold = manifolds[m];
+    const PointConstraint& first = constraints[m * slots];
+    group.manifold[lane] = m;
+    group.bodyA[lane] = manifold.a;
+    group.bodyB[lane] = manifold.b;
+    setLanes(group.direction[0], lane, manifold.normal);
+    setLanes(group.direction[1], lane, first.tangent[0]);
+    setLanes(group.direction[2], lane, first.tangent[1]);
+    setLane(group.inverseMassA, lane, first.inverseMassA);
+    setLane(group.inverseMassB, lane, first.inverseMassB);
+    setLanes(group.linearMaskA, lane, bodies[manifold.a].linearMask);
+    setLanes(group.linearMaskB, lane, bodies[manifold.b].linearMask);
+    for (int p = 0; p < manifold.pointCount; ++p)
+      packPoint(group.points[p], lane, constraints[m * slots + p], manifold.points[p]);
+  }
+  return group;
+}
+
+void loadWideGaps(WideManifolds& group, const std::vector<PointConstraint>& constraints) {
+  for (int p = 0; p < slots; ++p) {
+    alignas(64) double gaps[lanes] = {};
+    for (int lane = 0; lane < lanes; ++lane)
+      if (group.manifold[lane] != WideManifolds::empty) gaps[lane] = constraints[group.manifold[lane] * slots + p].gap;
+    group.points[p].gap = Lanes::load(gaps);
+  }
+}
+
+void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies) {
+  LaneVelocities a = gather(group.bodyA, bodies), b = gather(group.bodyB, bodies);
+  for (WidePoint& point : group.points) {
+    applyNormal(a, b, group, point, point.normalImpulse);
+    applyRow(a, b, group, point, 1, point.tangentImpulse[0]);
+    applyRow(a, b, group, point, 2, point.tangentImpulse[1]);
+  }
+  scatter(a, group.bodyA, bodies);
+  scatter(b, group.bodyB, bodies);
+}
+
+void solveWide(WideManifolds& group, std::vector<SolverBody>& bodies, const WideSweep& sweep) {
+  LaneVelocities a = gather(group.bodyA, bodies), b = gather(group.bodyB, bodies);
+  for (int visit = 0; visit < slots; ++visit)
+    solveNormal(a, b, group, group.points[sweep.reversed ? slots - 1 - visit : visit], sweep);
+  for (int visit = 0; visit < slots; ++visit)
+    solveFriction(a, b, group, group.points[sweep.reversed ? slots - 1 - visit : visit]);
+  scatter(a, group.bodyA, bodies);
+  scatter(b, group.bodyB, bodies);
+}
+
+void storeWideImpulses(const WideManifolds& group, std::vector<ContactManifold>& manifolds,
+                       std::vector<PointConstraint>& constraints) {
+  for (int lane = 0; lane < lanes; ++lane) {
+    const std::uint32_t m = group.manifold[lane];
+    if (m == WideManifolds::empty) continue;
+    ContactManifold& manifold = manifolds[m];
+    for (int p = 0; p < manifold.pointCount; ++p) {
+      const WidePoint& wide = group.points[p];
+      ManifoldPoint& point = manifold.points[p];
+      point.normalImpulse = getLane(wide.normalImpulse, lane);
+      point.tangentImpulse[0] = getLane(wide.tangentImpulse[0], lane);
+      point.tangentImpulse[1] = getLane(wide.tangentImpulse[1], lane);
+      point.stepNormalImpulse = getLane(wide.stepNormalImpulse, lane);
+      constraints[m * slots + p].largestImpulse = getLane(wide.largestImpulse, lane);
+    }
+  }
+}
+
+}  // namespace physdbg

@@ -1,0 +1,69 @@
+#pragma once
+// Structure-of-arrays contact rows for the wide solve: up to simd::width
+// manifolds of one colour (constraint_colouring.h), one per SIMD lane, each
+// with its four point slots (a manifold with fewer points leaves the rest
+// empty: zero mass, zero impulse, so they change nothing). Lanes of a group
+// share no movable body, so the group gathers its bodies' velocities once,
+// solves every point of every lane at once, and scatters them back.
+//
+// Each lane does exactly what the scalar solver does for its manifold, in the
+// same order: normal rows point by point (in reverse on alternate sweeps;
+// empty slots come last, so reversing all four slots visits the real points
+// in their reverse order), then friction. The speculative manifolds solved
+// all points together (the 4x4 approach solve) stay scalar.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "engine/contacts/contact_manifold.h"
+#include "engine/solver/point_constraint.h"
+#include "engine/solver/simd_lanes.h"
+#include "engine/solver/solver_body.h"
+#include "engine/solver/step_context.h"
+
+namespace physdbg {
+
+// One point slot of every lane.
+struct WidePoint {
+  simd::Lanes crossA[3][3], crossB[3][3];  // [row][axis]
+  simd::Lanes turnA[3][3], turnB[3][3];
+  simd::Lanes normalMass, tangentMass[2], friction, gap;
+  simd::Lanes normalImpulse, tangentImpulse[2], largestImpulse, stepNormalImpulse;
+};
+
+struct WideManifolds {
+  static constexpr std::uint32_t empty = ~0u;
+  std::array<std::uint32_t, simd::width> manifold, bodyA, bodyB;  // `empty` in unused lanes
+  simd::Lanes direction[3][3];  // [row][axis]: the normal, then the two tangents
+  simd::Lanes inverseMassA, inverseMassB;  // as scaled for the contact
+  simd::Lanes linearMaskA[3], linearMaskB[3];
+  std::array<WidePoint, ContactManifold::maxPoints> points;
+};
+
+// Up to simd::width manifolds (indices into `manifolds`, sharing no movable
+// body) into one group, from their prepared constraints (maxPoints per
+// manifold) and their current impulses.
+WideManifolds packWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
+                                const std::vector<PointConstraint>& constraints,
+                                const std::vector<SolverBody>& bodies);
+
+// The group's gaps, from `constraints` (measured there at the current poses).
+void loadWideGaps(WideManifolds& group, const std::vector<PointConstraint>& constraints);
+
+// Applies the impulses the group starts the substep with.
+void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies);
+
+struct WideSweep {
+  const SubstepContext* substeps = nullptr;
+  double maxPushSpeed = 0.0;
+  bool useBias = true;  // the soft push-out of overlap (off in the relax sweep)
+  bool reversed = false;
+};
+// One sweep: every point's normal row, then its friction.
+void solveWide(WideManifolds& group, std::vector<SolverBody>& bodies, const WideSweep& sweep);
+
+// Impulses (and each point's largest one) back to the manifolds and constraints.
+void storeWideImpulses(const WideManifolds& group, std::vector<ContactManifold>& manifolds,
+                       std::vector<PointConstraint>& constraints);
+
+}  // namespace physdbg
