@@ -1,5 +1,7 @@
 #include "engine/solver/wide_contact_rows.h"
 
+#include <algorithm>
+
 #include <cstring>
 
 namespace physdbg {
@@ -171,12 +173,13 @@ WideManifolds packWideManifolds(const std::uint32_t* members, int count, const s
     setLanes(group.linearMaskB, lane, bodies[manifold.b].linearMask);
     for (int p = 0; p < manifold.pointCount; ++p)
       packPoint(group.points[p], lane, constraints[m * slots + p], manifold.points[p]);
+    group.pointSlots = std::max(group.pointSlots, manifold.pointCount);
   }
   return group;
 }
 
 void loadWideGaps(WideManifolds& group, const std::vector<PointConstraint>& constraints) {
-  for (int p = 0; p < slots; ++p) {
+  for (int p = 0; p < group.pointSlots; ++p) {
     alignas(64) double gaps[lanes] = {};
     for (int lane = 0; lane < lanes; ++lane)
       if (group.manifold[lane] != WideManifolds::empty) gaps[lane] = constraints[group.manifold[lane] * slots + p].gap;
@@ -186,7 +189,8 @@ void loadWideGaps(WideManifolds& group, const std::vector<PointConstraint>& cons
 
 void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies) {
   LaneVelocities a = gather(group.bodyA, bodies), b = gather(group.bodyB, bodies);
-  for (WidePoint& point : group.points) {
+  for (int p = 0; p < group.pointSlots; ++p) {
+    WidePoint& point = group.points[p];
     applyNormal(a, b, group, point, point.normalImpulse);
     applyRow(a, b, group, point, 1, point.tangentImpulse[0]);
     applyRow(a, b, group, point, 2, point.tangentImpulse[1]);
@@ -197,10 +201,11 @@ void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies) {
 
 void solveWide(WideManifolds& group, std::vector<SolverBody>& bodies, const WideSweep& sweep) {
   LaneVelocities a = gather(group.bodyA, bodies), b = gather(group.bodyB, bodies);
-  for (int visit = 0; visit < slots; ++visit)
-    solveNormal(a, b, group, group.points[sweep.reversed ? slots - 1 - visit : visit], sweep);
-  for (int visit = 0; visit < slots; ++visit)
-    solveFriction(a, b, group, group.points[sweep.reversed ? slots - 1 - visit : visit]);
+  const int used = group.pointSlots;
+  for (int visit = 0; visit < used; ++visit)
+    solveNormal(a, b, group, group.points[sweep.reversed ? used - 1 - visit : visit], sweep);
+  for (int visit = 0; visit < used; ++visit)
+    solveFriction(a, b, group, group.points[sweep.reversed ? used - 1 - visit : visit]);
   scatter(a, group.bodyA, bodies);
   scatter(b, group.bodyB, bodies);
 }

@@ -38,6 +38,9 @@ struct WideManifolds {
   simd::Lanes inverseMassA, inverseMassB;  // as scaled for the contact
   simd::Lanes linearMaskA[3], linearMaskB[3];
   std::array<WidePoint, ContactManifold::maxPoints> points;
+  // The most points any lane has: slots past it are empty in every lane, so
+  // a group of sphere contacts (one point each) solves one slot, not four.
+  int pointSlots = 0;
 };
 
 // Up to simd::width manifolds (indices into `manifolds`, sharing no movable
