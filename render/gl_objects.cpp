@@ -73,6 +73,21 @@ GlProgram createProgram(const char* vertexSource, const char* fragmentSource, co
   return program;
 }
 
+GlProgram createComputeProgram(const char* source, const std::string& label) {
+  ShaderObject compute(GL_COMPUTE_SHADER, source, label + " (compute)");
+  GlProgram program(glCreateProgram());
+  glAttachShader(program.get(), compute.get());
+  glLinkProgram(program.get());
+  GLint ok = 0;
+  glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+  if (!ok) {
+    std::vector<char> log(4096);
+    glGetProgramInfoLog(program.get(), static_cast<GLsizei>(log.size()), nullptr, log.data());
+    throw std::runtime_error("program '" + label + "' does not link: " + log.data());
+  }
+  return program;
+}
+
 void checkGlError(const char* what) {
   const GLenum error = glGetError();
   if (error != GL_NO_ERROR) throw std::runtime_error(std::string("GL error ") + std::to_string(error) + " in " + what);

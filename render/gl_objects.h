@@ -55,6 +55,8 @@ GlFramebuffer createFramebuffer();
 GlRenderbuffer createRenderbuffer();
 // Compiles and links; throws std::runtime_error with the info log on failure.
 GlProgram createProgram(const char* vertexSource, const char* fragmentSource, const std::string& label);
+// A compute shader program (GL 4.3); throws std::runtime_error with the info log on failure.
+GlProgram createComputeProgram(const char* source, const std::string& label);
 
 // Throws std::runtime_error naming `what` if GL recorded an error.
 void checkGlError(const char* what);
