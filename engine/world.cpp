@@ -20,7 +20,8 @@ constexpr std::size_t pairGrain = 32;
 constexpr std::size_t bodyGrain = 256;
 constexpr std::size_t staticRowGrain = 8;  // a row is up to n overlap tests
 
-std::unique_ptr<BroadPhase> makeBroadPhase(const WorldSettings& settings, const TaskSystem& tasks) {
+std::unique_ptr<BroadPhase> makeBroadPhase(const WorldSettings& settings, const TaskSystem& tasks,
+                                           CollisionOffload* offload) {
   if (settings.broadPhase == BroadPhaseKind::BruteForce) {
     BruteForceOptions options;
     options.margin = settings.fatMargin;
@@ -32,19 +33,27 @@ std::unique_ptr<BroadPhase> makeBroadPhase(const WorldSettings& settings, const 
   options.margin = settings.fatMargin;
   options.insertion = settings.treeInsertion;
   options.rotations = settings.treeRotations;
+  if (offload != nullptr) return offload->makeBroadPhase(options);
   return std::make_unique<TreeBroadPhase>(options);
 }
 
 }  // namespace
 
-World::World(const WorldSettings& settings)
+World::World(const WorldSettings& settings, std::shared_ptr<CollisionOffload> offload)
     : settings_(settings),
       tasks_(std::make_unique<TaskSystem>(settings.threads)),
-      broadPhase_(makeBroadPhase(settings, *tasks_)),
+      offload_(std::move(offload)),
+      broadPhase_(makeBroadPhase(settings, *tasks_, offload_.get())),
       solver_(makeContactSolver(settings.solver, settings.narrowPhase)) {
   if (!(settings.dt > 0.0) || !std::isfinite(settings.dt)) throw std::invalid_argument("dt must be positive");
   if (!isFinite(settings.gravity)) throw std::invalid_argument("gravity must be finite");
   if (!(settings.fatMargin >= 0.0)) throw std::invalid_argument("fat margin must not be negative");
+  if (settings.collisionDevice == CollisionDevice::Gpu && offload_ == nullptr)
+    throw std::invalid_argument("collision on the gpu needs a compute context, which the engine cannot make: "
+                                "physdbg simulate, render, contacts and bench make one (--collision gpu); "
+                                "a program passes a gpu::GpuCollision");
+  if (settings.collisionDevice == CollisionDevice::Cpu && offload_ != nullptr)
+    throw std::invalid_argument("a collision offload was given to a world whose collision device is cpu");
 }
 
 World::~World() = default;
@@ -235,6 +244,10 @@ World::PairTest World::testPair(const BodyPair& pair, const StepContext& context
     return test;
   }
   test.outcome = PairTest::Outcome::Tested;
+  if (offload_ && offload_->handles(a.collider().kind(), b.collider().kind()) && !settings_.bruteForceBothOrders) {
+    test.offloaded = true;
+    return test;
+  }
   test.result = collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase);
   // The design's brute force ran the narrow phase for B-A too; it responded
   // once per pair, so that second answer is only counted (gatherContacts).
@@ -248,6 +261,22 @@ void World::testPairs(const StepContext& context) {
   tasks_->parallelFor(pairs_.size(), pairGrain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) pairTests_[i] = testPair(pairs_[i], context);
   });
+  if (offload_) testOffloadedPairs();
+}
+
+// One batch for the whole pass: a GPU pays per dispatch and readback, not per pair.
+void World::testOffloadedPairs() {
+  offloadRequests_.clear();
+  offloadPairs_.clear();
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    if (!pairTests_[i].offloaded) continue;
+    offloadRequests_.push_back({pairs_[i].a, pairs_[i].b, pairTests_[i].reach});
+    offloadPairs_.push_back(i);
+  }
+  offloaded_.clear();
+  if (offloadRequests_.empty()) return;
+  offload_->collide(bodies_, offloadRequests_, offloaded_);
+  for (std::size_t k = 0; k < offloadPairs_.size(); ++k) pairTests_[offloadPairs_[k]].result = offloaded_[k].result;
 }
 
 // In pair order: the counters, the candidates the solver turns into
@@ -257,6 +286,8 @@ void World::gatherContacts(const StepContext& context) {
   const double touchingGap = solver_->touchingGap();
   candidates_.clear();
   reaches_.clear();
+  prebuilt_.clear();
+  std::size_t offloadedSoFar = 0;
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
     const PairTest& test = pairTests_[i];
     if (test.outcome == PairTest::Outcome::Skipped) continue;
@@ -269,10 +300,11 @@ void World::gatherContacts(const StepContext& context) {
     if (settings_.bruteForceBothOrders) stats_.narrowPhase.add(test.reversed);
     candidates_.push_back(contact);
     reaches_.push_back(test.reach);
+    if (offload_) prebuilt_.push_back(test.offloaded ? &offloaded_[offloadedSoFar++].manifold : nullptr);
     if (contact.result.status == ContactStatus::Separated && contact.result.distance > touchingGap) continue;
     contacts_.push_back(contact);
   }
-  stats_.manifoldPoints += solver_->addCandidates(candidates_, reaches_, bodies_, context);
+  stats_.manifoldPoints += solver_->addCandidates(candidates_, reaches_, bodies_, context, prebuilt_);
 }
 
 // The design's baseline without static-pair skipping: pairs of bodies that

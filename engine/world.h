@@ -12,6 +12,7 @@
 #include "debugdraw/primitives.h"
 #include "engine/broadphase/broad_phase.h"
 #include "engine/broadphase/tree_options.h"
+#include "engine/collision_offload.h"
 #include "engine/contacts/contact.h"
 #include "engine/contacts/contact_events.h"
 #include "engine/contacts/contact_history.h"
@@ -56,6 +57,10 @@ struct WorldSettings {
 
   SolverSettings solver;  // sequential impulses by default; solver.seed for the design's
   NarrowPhaseOptions narrowPhase;
+
+  // Gpu: the broad phase and the pairs the offload handles run in compute
+  // shaders (gpu/); the world must then be given a CollisionOffload.
+  CollisionDevice collisionDevice = CollisionDevice::Cpu;
 };
 
 // A force, torque, impulse or velocity change (its ForceMode) applied to one
@@ -108,7 +113,9 @@ struct StepStats {
 
 class World {
  public:
-  explicit World(const WorldSettings& settings = {});
+  // Throws std::invalid_argument when settings.collisionDevice is Gpu and no
+  // offload is given, or an offload is given for a Cpu world.
+  explicit World(const WorldSettings& settings = {}, std::shared_ptr<CollisionOffload> offload = nullptr);
   ~World();
   World(World&&) noexcept;
   World& operator=(World&&) noexcept;
@@ -213,9 +220,11 @@ class World {
     double reach = 0.0;
     ContactResult result;
     ContactResult reversed;  // B-A, tested only with bruteForceBothOrders
+    bool offloaded = false;  // the collision offload answers it (testOffloadedPairs)
   };
   PairTest testPair(const BodyPair& pair, const StepContext& context) const;
   void testPairs(const StepContext& context);
+  void testOffloadedPairs();
   void gatherContacts(const StepContext& context);
   void testStaticPairs();
   struct StaticRowCounts {  // one body's static pairs with higher ids (testStaticPairs)
@@ -254,11 +263,16 @@ class World {
   std::vector<double> slowTime_;  // seconds spent below the sleep speeds
   std::vector<BodyId> island_;    // lowest id of the body's island (see islandOf)
   std::unique_ptr<TaskSystem> tasks_;  // before broadPhase_, which may hold a pointer to it
+  std::shared_ptr<CollisionOffload> offload_;  // before broadPhase_, which it may have made
   std::unique_ptr<BroadPhase> broadPhase_;
   std::vector<BodyPair> pairs_;
   std::vector<PairTest> pairTests_;          // per candidate pair, this pass (testPairs)
   std::vector<Contact> candidates_;          // tested pairs, for the solver (gatherContacts)
   std::vector<double> reaches_;              // their contactReach
+  std::vector<OffloadRequest> offloadRequests_;  // this pass's offloaded pairs (testOffloadedPairs)
+  std::vector<std::size_t> offloadPairs_;        // their index in pairs_
+  std::vector<OffloadedContact> offloaded_;      // the offload's answers
+  std::vector<const ContactManifold*> prebuilt_;  // per candidate: its offloaded manifold or null
   std::vector<PredictedMotion> predictions_;  // per body, this step (updateBroadPhase)
   std::vector<StaticRowCounts> staticRows_;   // per body, this pass (testStaticPairs)
   std::vector<Contact> contacts_;  // this step's touching pairs

@@ -62,6 +62,7 @@ const std::vector<BuiltinScene>& builtinScenes();
 SceneDescription resolveScene(const std::string& nameOrPath);
 
 // Throws SceneError naming the body when the engine rejects a definition.
-World buildWorld(const SceneDescription& scene);
+// A scene whose collision device is gpu needs `offload` (gpu/gpu_collision.h).
+World buildWorld(const SceneDescription& scene, std::shared_ptr<CollisionOffload> offload = nullptr);
 
 }  // namespace physdbg

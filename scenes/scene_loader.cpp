@@ -298,6 +298,14 @@ void readBroadPhase(const JsonReader& reader, const json& value, const std::stri
     world.skipStaticPairs = reader.boolean(value["skip_static_pairs"], path + ".skip_static_pairs");
 }
 
+void readCollision(const JsonReader& reader, const json& value, const std::string& path, WorldSettings& world) {
+  reader.requireObject(value, path);
+  reader.checkKeys(value, path, {"device"});
+  if (value.contains("device"))
+    world.collisionDevice = readChoice<CollisionDevice>(reader, value["device"], path + ".device",
+                                                        {{"cpu", CollisionDevice::Cpu}, {"gpu", CollisionDevice::Gpu}});
+}
+
 void readWorldKeys(const JsonReader& reader, const json& root, SceneDescription& scene) {
   if (root.contains("gravity")) scene.world.gravity = reader.vec3(root["gravity"], "gravity");
   if (root.contains("dt")) scene.world.dt = reader.inRange(root["dt"], "dt", limits::minDt, limits::maxDt);
@@ -306,6 +314,7 @@ void readWorldKeys(const JsonReader& reader, const json& root, SceneDescription&
   if (root.contains("threads"))
     scene.world.threads = static_cast<int>(reader.integer(root["threads"], "threads", 0, limits::maxThreads));
   if (root.contains("broadphase")) readBroadPhase(reader, root["broadphase"], "broadphase", scene.world);
+  if (root.contains("collision")) readCollision(reader, root["collision"], "collision", scene.world);
   if (root.contains("solver")) readSolver(reader, root["solver"], "solver", scene.world.solver);
   if (root.contains("restitution_combine"))
     scene.world.solver.combine.restitution = readCombineRule(reader, root["restitution_combine"], "restitution_combine");
@@ -369,7 +378,7 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
   const json root = parseBoundedJson(jsonText, sourceName);
   reader.requireObject(root, "");
   reader.checkKeys(root, "", {"name", "description", "gravity", "dt", "steps", "bodies", "camera", "layers",
-                              "allow_sleep", "threads", "broadphase", "solver", "restitution_combine",
+                              "allow_sleep", "threads", "broadphase", "collision", "solver", "restitution_combine",
                               "friction_combine", "forces"});
   SceneDescription scene;
   scene.source = sourceName;
@@ -410,11 +419,11 @@ SceneDescription loadSceneFile(const std::string& path) {
 
 // Settings and bodies were validated key by key; what the engine still
 // rejects is reported against the file and the entry it came from.
-World buildWorld(const SceneDescription& scene) {
+World buildWorld(const SceneDescription& scene, std::shared_ptr<CollisionOffload> offload) {
   const std::string source = scene.source.empty() ? "scene " + scene.name : scene.source;
   std::optional<World> world;
   try {
-    world.emplace(scene.world);
+    world.emplace(scene.world, std::move(offload));
   } catch (const std::invalid_argument& error) {
     throw SceneError(source + ": world settings: " + error.what());
   }

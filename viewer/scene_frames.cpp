@@ -80,13 +80,14 @@ dd::LayerSet allLayerSet() {
   return all;
 }
 
-SceneFrames::SceneFrames(const SceneDescription& scene, const ViewOptions& options, FramePurpose purpose)
+SceneFrames::SceneFrames(const SceneDescription& scene, const ViewOptions& options, FramePurpose purpose,
+                         std::shared_ptr<CollisionOffload> collision)
     : scene_(scene),
       options_(options),
       purpose_(purpose),
       selection_(selectionOf(options)),
       emitted_(purpose == FramePurpose::Record ? allLayerSet() : dd::layersNeeded(selection_)),
-      world_(buildWorld(scene)) {
+      world_(buildWorld(scene, std::move(collision))) {
   world_.keepContactHistory(true);
   dd::Frame framing;
   world_.emitDebugDraw(dd::parseLayers("shapes"), framing);

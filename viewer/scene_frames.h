@@ -19,7 +19,9 @@ enum class FramePurpose { Show, Record };
 
 class SceneFrames {
  public:
-  SceneFrames(const SceneDescription& scene, const ViewOptions& options, FramePurpose purpose = FramePurpose::Show);
+  // `collision`: the stage for a scene whose collision device is gpu (cli/collision_device.h).
+  SceneFrames(const SceneDescription& scene, const ViewOptions& options, FramePurpose purpose = FramePurpose::Show,
+              std::shared_ptr<CollisionOffload> collision = nullptr);
 
   // Frame `index` (>= every earlier call's): simulates up to it and draws it.
   debugdraw::RecordedFrame frame(int index);

@@ -59,8 +59,12 @@ class ContactSolver {
   // candidates[i]'s contactReach: keeps what addCandidate on each in turn
   // would, which is what this default does. A solver may spread the work over
   // step.tasks as long as the result does not depend on how it is split.
+  // `prebuilt` is empty, or holds per candidate the manifold a collision
+  // offload (collision_offload.h) built for it, or null where none did; a
+  // solver with manifolds uses those instead of building its own.
   virtual int addCandidates(const std::vector<Contact>& candidates, const std::vector<double>& reaches,
-                            const std::vector<RigidBody>& bodies, const StepContext& step);
+                            const std::vector<RigidBody>& bodies, const StepContext& step,
+                            const std::vector<const ContactManifold*>& prebuilt);
 
   // Solves `contacts` (the touching ones) or the kept candidates, and moves
   // every movable body to the end of the step.

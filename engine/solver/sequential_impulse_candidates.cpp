@@ -3,6 +3,7 @@
 // built in parallel. Each candidate has its own slot and each piece its own
 // scratch; the kept ones are appended in pair order afterwards, so
 // manifolds_ is what addCandidate on each in turn gives, for any thread count.
+// A manifold the GPU collision stage built arrives prebuilt and is only kept.
 #include "engine/parallel/task_system.h"
 #include "engine/solver/sequential_impulse_solver.h"
 
@@ -14,7 +15,8 @@ constexpr std::size_t candidateGrain = 64;  // a manifold is ~0.5 us to build
 }  // namespace
 
 int SequentialImpulseSolver::addCandidates(const std::vector<Contact>& candidates, const std::vector<double>& reaches,
-                                           const std::vector<RigidBody>& bodies, const StepContext& step) {
+                                           const std::vector<RigidBody>& bodies, const StepContext& step,
+                                           const std::vector<const ContactManifold*>& prebuilt) {
   candidateManifolds_.resize(candidates.size());
   candidateKept_.resize(candidates.size());
   const auto build = [&](std::size_t begin, std::size_t end) {
@@ -23,6 +25,10 @@ int SequentialImpulseSolver::addCandidates(const std::vector<Contact>& candidate
       const Contact& contact = candidates[i];
       candidateKept_[i] = !(contact.result.status == ContactStatus::Separated && contact.result.distance > reaches[i]);
       if (!candidateKept_[i]) continue;
+      if (!prebuilt.empty() && prebuilt[i] != nullptr) {
+        candidateManifolds_[i] = *prebuilt[i];
+        continue;
+      }
       ContactManifold& manifold = candidateManifolds_[i] = ContactManifold{};
       manifold.a = contact.a;
       manifold.b = contact.b;
