@@ -93,12 +93,29 @@ void main() {
 }
 )glsl";
 
-const char* const broadPhaseSweepShader = R"glsl(#version 430
+const char* const broadPhaseGatherShader = R"glsl(#version 430
 layout(local_size_x = 256) in;
 struct Box { vec4 minimum; vec4 maximum; };
 layout(std430, binding = 0) readonly buffer Boxes { Box boxes[]; };
 layout(std430, binding = 1) readonly buffer Entries { uvec2 entries[]; };
+layout(std430, binding = 3) writeonly buffer Sorted { Box sorted[]; };
+uniform uint liveCount;
+
+void main() {
+  uint position = gl_GlobalInvocationID.x;
+  if (position >= liveCount) return;
+  uint slot = entries[position].y;
+  Box box = boxes[slot];
+  box.maximum.w = uintBitsToFloat(slot);
+  sorted[position] = box;
+}
+)glsl";
+
+const char* const broadPhaseSweepShader = R"glsl(#version 430
+layout(local_size_x = 256) in;
+struct Box { vec4 minimum; vec4 maximum; };
 layout(std430, binding = 2) buffer Pairs { uint pairCount; uint padding; uvec2 pairs[]; };
+layout(std430, binding = 3) readonly buffer Sorted { Box sorted[]; };
 uniform uint liveCount;
 uniform uint axis;
 uniform uint capacity;
@@ -106,17 +123,17 @@ uniform uint capacity;
 void main() {
   uint position = gl_GlobalInvocationID.x;
   if (position >= liveCount) return;
-  uint self = entries[position].y;
-  Box box = boxes[self];
+  Box box = sorted[position];
+  uint self = floatBitsToUint(box.maximum.w);
   float reach = box.maximum[axis];
   bool drives = box.minimum.w == 2.0;
   for (uint next = position + 1u; next < liveCount; ++next) {
-    uint other = entries[next].y;
-    Box candidate = boxes[other];
+    Box candidate = sorted[next];
     if (candidate.minimum[axis] > reach) break;
     if (!drives && candidate.minimum.w != 2.0) continue;
     if (all(lessThanEqual(box.minimum.xyz, candidate.maximum.xyz)) &&
         all(lessThanEqual(candidate.minimum.xyz, box.maximum.xyz))) {
+      uint other = floatBitsToUint(candidate.maximum.w);
       uint slot = atomicAdd(pairCount, 1u);
       if (slot < capacity) pairs[slot] = uvec2(min(self, other), max(self, other));
     }

@@ -3,7 +3,8 @@
 // boxes (two vec4 per proxy slot, the role in the min's w: 0 no proxy, 1 a
 // proxy that cannot drive a pair, 2 a dynamic awake one), binding 1 the sort
 // entries (uvec2: order-preserving key of the box's min on the sweep axis,
-// slot), binding 2 the pair list (a count, a pad word, then uvec2 pairs).
+// slot), binding 2 the pair list (a count, a pad word, then uvec2 pairs),
+// binding 3 the live boxes in sort order.
 #include <cstdint>
 
 namespace physdbg::gpu {
@@ -22,7 +23,10 @@ extern const char* const broadPhaseKeyShader;
 extern const char* const broadPhaseLocalSortShader;
 // One bitonic step (stage, step) whose partners lie in different blocks.
 extern const char* const broadPhaseGlobalStepShader;
-// From every sorted entry, walks the entries after it while their min on the
+// Copies the live boxes into sort order (binding 3), each with its slot in
+// the max's w: the sweep then reads neighbours from adjacent memory.
+extern const char* const broadPhaseGatherShader;
+// From every sorted box, walks the entries after it while their min on the
 // sweep axis is within its max, and appends the overlapping eligible pairs.
 extern const char* const broadPhaseSweepShader;
 

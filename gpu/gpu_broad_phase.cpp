@@ -66,6 +66,7 @@ GpuBroadPhase::GpuBroadPhase(ComputeContext& context, const DynamicAabbTreeOptio
   keyProgram_ = render::createComputeProgram(broadPhaseKeyShader, "broad phase keys");
   localSortProgram_ = render::createComputeProgram(broadPhaseLocalSortShader, "broad phase local sort");
   globalStepProgram_ = render::createComputeProgram(broadPhaseGlobalStepShader, "broad phase global step");
+  gatherProgram_ = render::createComputeProgram(broadPhaseGatherShader, "broad phase gather");
   sweepProgram_ = render::createComputeProgram(broadPhaseSweepShader, "broad phase sweep");
 }
 
@@ -195,7 +196,8 @@ void GpuBroadPhase::uploadBoxes() {
 
 // Keys, then a bitonic sort: one dispatch sorts every block in shared memory;
 // each later stage takes one dispatch per step whose partners lie in
-// different blocks and one that finishes the stage within the blocks.
+// different blocks and one that finishes the stage within the blocks. Last,
+// the live boxes are gathered into sort order for the sweep.
 void GpuBroadPhase::sortOnGpu(int axis, std::uint32_t paddedCount) {
   sortEntries_.reserve(static_cast<std::size_t>(paddedCount) * sortEntryBytes);
   boxes_.bind(0);
@@ -220,15 +222,19 @@ void GpuBroadPhase::sortOnGpu(int axis, std::uint32_t paddedCount) {
     setUniform(localSortProgram_, "mergeStage", stage);
     dispatch(blocks);
   }
+  sortedBoxes_.reserve(static_cast<std::size_t>(liveCount_) * sizeof(GpuBox));
+  sortedBoxes_.bind(3);
+  glUseProgram(gatherProgram_.get());
+  setUniform(gatherProgram_, "liveCount", static_cast<std::uint32_t>(liveCount_));
+  dispatch(groupsFor(static_cast<std::uint32_t>(liveCount_)));
 }
 
 void GpuBroadPhase::sweepOnGpu(int axis) {
   pairList_.reserve(pairListHeaderBytes + static_cast<std::size_t>(pairCapacity_) * pairBytes);
   const std::uint32_t zero[2] = {0, 0};
   pairList_.upload(0, zero, sizeof(zero));
-  boxes_.bind(0);
-  sortEntries_.bind(1);
   pairList_.bind(2);
+  sortedBoxes_.bind(3);
   glUseProgram(sweepProgram_.get());
   setUniform(sweepProgram_, "liveCount", static_cast<std::uint32_t>(liveCount_));
   setUniform(sweepProgram_, "axis", static_cast<std::uint32_t>(axis));

@@ -80,9 +80,10 @@ class GpuBroadPhase final : public BroadPhase {
   std::vector<std::uint32_t> candidates_;  // pairs of proxy ids, as read back
   int liveCount_ = 0;
   std::uint32_t pairCapacity_ = 0;
-  render::GlProgram keyProgram_, localSortProgram_, globalStepProgram_, sweepProgram_;
+  render::GlProgram keyProgram_, localSortProgram_, globalStepProgram_, gatherProgram_, sweepProgram_;
   StorageBuffer boxes_{"broad phase boxes"};
   StorageBuffer sortEntries_{"broad phase sort entries"};
+  StorageBuffer sortedBoxes_{"broad phase sorted boxes"};
   StorageBuffer pairList_{"broad phase pair list"};
   std::size_t boxSlots_ = 0;  // slots the box buffer holds since it last grew
   GpuBroadPhaseTimings timings_;
