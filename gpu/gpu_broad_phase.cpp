@@ -22,6 +22,7 @@ constexpr float roleNone = 0.0f, rolePassive = 1.0f, roleDrives = 2.0f;
 constexpr std::size_t pairListHeaderBytes = 2 * sizeof(std::uint32_t);
 constexpr std::size_t pairBytes = 2 * sizeof(std::uint32_t);
 constexpr std::size_t sortEntryBytes = 2 * sizeof(std::uint32_t);
+constexpr std::size_t linkBytes = 4 * sizeof(std::uint32_t);
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -67,7 +68,9 @@ GpuBroadPhase::GpuBroadPhase(ComputeContext& context, const DynamicAabbTreeOptio
   localSortProgram_ = render::createComputeProgram(broadPhaseLocalSortShader, "broad phase local sort");
   globalStepProgram_ = render::createComputeProgram(broadPhaseGlobalStepShader, "broad phase global step");
   gatherProgram_ = render::createComputeProgram(broadPhaseGatherShader, "broad phase gather");
-  sweepProgram_ = render::createComputeProgram(broadPhaseSweepShader, "broad phase sweep");
+  buildProgram_ = render::createComputeProgram(broadPhaseBuildShader, "broad phase build");
+  boundsProgram_ = render::createComputeProgram(broadPhaseBoundsShader, "broad phase bounds");
+  traverseProgram_ = render::createComputeProgram(broadPhaseTraverseShader, "broad phase traverse");
 }
 
 void GpuBroadPhase::requireProxy(int proxy, const char* operation) const {
@@ -145,24 +148,23 @@ GpuBroadPhase::GpuBox GpuBroadPhase::toGpu(const ProxyState& state) const {
   return box;
 }
 
-// The axis along which the box centres vary most, so the sweep walks past
-// the fewest boxes that overlap only in that axis. Measured from the first
-// live centre: far from the origin, squares of raw coordinates cancel.
-int GpuBroadPhase::sweepAxis() const {
-  Vec3 origin = Vec3::Zero(), sum = Vec3::Zero(), squares = Vec3::Zero();
-  bool first = true;
+// The grid the Morton codes quantise the box centres to: the centres'
+// bounds in 1024 cells a side. Any grid gives the right pairs; a tight one
+// gives a better tree.
+GpuBroadPhase::MortonGrid GpuBroadPhase::mortonGrid() const {
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
   for (const ProxyState& state : proxies_) {
     if (!state.live) continue;
-    if (first) origin = state.fatBox.center();
-    first = false;
-    const Vec3 offset = state.fatBox.center() - origin;
-    sum += offset;
-    squares += offset.cwiseProduct(offset);
+    low = low.cwiseMin(state.fatBox.center());
+    high = high.cwiseMax(state.fatBox.center());
   }
-  const Vec3 variance = squares - sum.cwiseProduct(sum) / static_cast<double>(std::max(liveCount_, 1));
-  int axis = 0;
-  variance.maxCoeff(&axis);
-  return axis;
+  const Vec3 scale = (high - low).cwiseMax(Vec3::Constant(1e-30)).cwiseInverse() * 1023.0;
+  MortonGrid grid;
+  for (int axis = 0; axis < 3; ++axis) {
+    grid.origin[axis] = static_cast<float>(low[axis]);
+    grid.scale[axis] = static_cast<float>(std::min(scale[axis], 1e30));
+  }
+  return grid;
 }
 
 // Uploads the boxes that changed since the last call, in runs of adjacent
@@ -196,16 +198,16 @@ void GpuBroadPhase::uploadBoxes() {
 
 // Keys, then a bitonic sort: one dispatch sorts every block in shared memory;
 // each later stage takes one dispatch per step whose partners lie in
-// different blocks and one that finishes the stage within the blocks. Last,
-// the live boxes are gathered into sort order for the sweep.
-void GpuBroadPhase::sortOnGpu(int axis, std::uint32_t paddedCount) {
+// different blocks and one that finishes the stage within the blocks.
+void GpuBroadPhase::sortOnGpu(const MortonGrid& grid, std::uint32_t paddedCount) {
   sortEntries_.reserve(static_cast<std::size_t>(paddedCount) * sortEntryBytes);
   boxes_.bind(0);
   sortEntries_.bind(1);
   glUseProgram(keyProgram_.get());
   setUniform(keyProgram_, "slotCount", static_cast<std::uint32_t>(proxies_.size()));
   setUniform(keyProgram_, "paddedCount", paddedCount);
-  setUniform(keyProgram_, "axis", static_cast<std::uint32_t>(axis));
+  glUniform3fv(glGetUniformLocation(keyProgram_.get(), "origin"), 1, grid.origin);
+  glUniform3fv(glGetUniformLocation(keyProgram_.get(), "scale"), 1, grid.scale);
   dispatch(groupsFor(paddedCount));
   const std::uint32_t blocks = paddedCount / broadPhaseSortBlock;
   glUseProgram(localSortProgram_.get());
@@ -222,23 +224,42 @@ void GpuBroadPhase::sortOnGpu(int axis, std::uint32_t paddedCount) {
     setUniform(localSortProgram_, "mergeStage", stage);
     dispatch(blocks);
   }
-  sortedBoxes_.reserve(static_cast<std::size_t>(liveCount_) * sizeof(GpuBox));
-  sortedBoxes_.bind(3);
-  glUseProgram(gatherProgram_.get());
-  setUniform(gatherProgram_, "liveCount", static_cast<std::uint32_t>(liveCount_));
-  dispatch(groupsFor(static_cast<std::uint32_t>(liveCount_)));
 }
 
-void GpuBroadPhase::sweepOnGpu(int axis) {
+// Leaves in sort order, the internal nodes' links, then their boxes.
+void GpuBroadPhase::buildTreeOnGpu() {
+  const auto live = static_cast<std::uint32_t>(liveCount_);
+  sortedBoxes_.reserve(live * sizeof(GpuBox));
+  links_.reserve(live * linkBytes);
+  nodeBoxes_.reserve(live * sizeof(GpuBox));
+  boxes_.bind(0);
+  sortEntries_.bind(1);
+  sortedBoxes_.bind(3);
+  links_.bind(4);
+  nodeBoxes_.bind(5);
+  glUseProgram(gatherProgram_.get());
+  setUniform(gatherProgram_, "liveCount", live);
+  dispatch(groupsFor(live));
+  glUseProgram(buildProgram_.get());
+  glUniform1i(glGetUniformLocation(buildProgram_.get(), "liveCount"), liveCount_);
+  dispatch(groupsFor(live - 1));
+  glUseProgram(boundsProgram_.get());
+  setUniform(boundsProgram_, "liveCount", live);
+  dispatch(groupsFor(live - 1));
+}
+
+void GpuBroadPhase::searchPairsOnGpu() {
   pairList_.reserve(pairListHeaderBytes + static_cast<std::size_t>(pairCapacity_) * pairBytes);
   const std::uint32_t zero[2] = {0, 0};
   pairList_.upload(0, zero, sizeof(zero));
+  sortEntries_.bind(1);
   pairList_.bind(2);
   sortedBoxes_.bind(3);
-  glUseProgram(sweepProgram_.get());
-  setUniform(sweepProgram_, "liveCount", static_cast<std::uint32_t>(liveCount_));
-  setUniform(sweepProgram_, "axis", static_cast<std::uint32_t>(axis));
-  setUniform(sweepProgram_, "capacity", pairCapacity_);
+  links_.bind(4);
+  nodeBoxes_.bind(5);
+  glUseProgram(traverseProgram_.get());
+  setUniform(traverseProgram_, "liveCount", static_cast<std::uint32_t>(liveCount_));
+  setUniform(traverseProgram_, "capacity", pairCapacity_);
   dispatch(groupsFor(static_cast<std::uint32_t>(liveCount_)));
 }
 
@@ -246,7 +267,7 @@ void GpuBroadPhase::sweepOnGpu(int axis) {
 // room); a second one only for the rest of a list that grew. A list that
 // overflowed the buffer is counted all the same, so one re-dispatch with
 // room for that count suffices.
-void GpuBroadPhase::readCandidates(int axis) {
+void GpuBroadPhase::readCandidates() {
   for (int attempt = 0; attempt < 2; ++attempt) {
     const std::uint32_t expected = std::min<std::uint32_t>(
         pairCapacity_, static_cast<std::uint32_t>(timings_.candidatePairs) / 4 * 5 + 256);
@@ -263,7 +284,7 @@ void GpuBroadPhase::readCandidates(int axis) {
       return;
     }
     pairCapacity_ = count / 4 * 5 + 256;
-    sweepOnGpu(axis);
+    searchPairsOnGpu();
   }
   throw std::logic_error("GpuBroadPhase: the pair list overflowed twice");
 }
@@ -303,14 +324,15 @@ void GpuBroadPhase::findPairs(std::vector<BodyPair>& pairs) {
   uploadBoxes();
   timings_.uploadSeconds = secondsSince(start);
   start = std::chrono::steady_clock::now();
-  const int axis = sweepAxis();
+  const MortonGrid grid = mortonGrid();
   const auto paddedCount = std::max(broadPhaseSortBlock, std::bit_ceil(static_cast<std::uint32_t>(proxies_.size())));
   pairCapacity_ = std::max<std::uint32_t>(pairCapacity_, 4 * static_cast<std::uint32_t>(liveCount_) + 1024);
-  sortOnGpu(axis, paddedCount);
-  sweepOnGpu(axis);
+  sortOnGpu(grid, paddedCount);
+  buildTreeOnGpu();
+  searchPairsOnGpu();
   timings_.dispatchSeconds = secondsSince(start);
   start = std::chrono::steady_clock::now();
-  readCandidates(axis);
+  readCandidates();
   timings_.readbackSeconds = secondsSince(start);
   keepExactPairs(pairs);
   stats_.boxesTested = timings_.candidatePairs;

@@ -1,7 +1,7 @@
 #pragma once
-// The broad phase with its pair search in compute shaders: sort-and-sweep on
-// the axis along which the boxes spread most, the sort a bitonic sort on the
-// GPU. It answers exactly what TreeBroadPhase answers, so the two can be
+// The broad phase with its pair search in compute shaders: a linear BVH
+// (Morton codes, bitonic sort, Karras build) rebuilt on the GPU at every
+// findPairs and traversed once per leaf. It answers exactly what TreeBroadPhase answers, so the two can be
 // swapped and compared: fat boxes are kept on the CPU in doubles by the
 // tree's own rule (engine/broadphase/fat_box.h), the GPU sees them as floats
 // rounded outwards (so it can report too many pairs, never too few), and the
@@ -60,14 +60,20 @@ class GpuBroadPhase final : public BroadPhase {
     float padding;
   };
 
+  struct MortonGrid {
+    float origin[3];
+    float scale[3];
+  };
+
   void requireProxy(int proxy, const char* operation) const;
   void markDirty(int proxy);
   GpuBox toGpu(const ProxyState& state) const;
-  int sweepAxis() const;
+  MortonGrid mortonGrid() const;
   void uploadBoxes();
-  void sortOnGpu(int axis, std::uint32_t paddedCount);
-  void sweepOnGpu(int axis);
-  void readCandidates(int axis);
+  void sortOnGpu(const MortonGrid& grid, std::uint32_t paddedCount);
+  void buildTreeOnGpu();
+  void searchPairsOnGpu();
+  void readCandidates();
   void keepExactPairs(std::vector<BodyPair>& pairs) const;
 
   ComputeContext& context_;
@@ -80,10 +86,13 @@ class GpuBroadPhase final : public BroadPhase {
   std::vector<std::uint32_t> candidates_;  // pairs of proxy ids, as read back
   int liveCount_ = 0;
   std::uint32_t pairCapacity_ = 0;
-  render::GlProgram keyProgram_, localSortProgram_, globalStepProgram_, gatherProgram_, sweepProgram_;
+  render::GlProgram keyProgram_, localSortProgram_, globalStepProgram_;
+  render::GlProgram gatherProgram_, buildProgram_, boundsProgram_, traverseProgram_;
   StorageBuffer boxes_{"broad phase boxes"};
   StorageBuffer sortEntries_{"broad phase sort entries"};
   StorageBuffer sortedBoxes_{"broad phase sorted boxes"};
+  StorageBuffer links_{"broad phase node links"};
+  StorageBuffer nodeBoxes_{"broad phase node boxes"};
   StorageBuffer pairList_{"broad phase pair list"};
   std::size_t boxSlots_ = 0;  // slots the box buffer holds since it last grew
   GpuBroadPhaseTimings timings_;
