@@ -1,16 +1,42 @@
 #include "gpu/broad_phase_shaders.h"
 
+#include <string>
+
 namespace physdbg::gpu {
 
-// The group size and block are spelled out in the sources; the static_asserts
-// below keep them equal to the constants the dispatches use.
+// The group size and block are spelled out in the sources; the static_assert
+// keeps them equal to the constants the dispatches use.
 static_assert(broadPhaseGroupSize == 256 && broadPhaseSortBlock == 512);
 
-const char* const broadPhaseKeyShader = R"glsl(#version 430
+namespace {
+
+// Every binding of the header comment, declared once for all the shaders.
+constexpr const char* preamble = R"glsl(#version 430
 layout(local_size_x = 256) in;
 struct Box { vec4 minimum; vec4 maximum; };
-layout(std430, binding = 0) readonly buffer Boxes { Box boxes[]; };
-layout(std430, binding = 1) writeonly buffer Entries { uvec2 entries[]; };
+layout(std430, binding = 0) buffer Boxes { Box boxes[]; };
+layout(std430, binding = 1) buffer Entries { uvec2 entries[]; };
+layout(std430, binding = 2) buffer Pairs { uint pairCount; uint padding; uvec2 pairs[]; };
+layout(std430, binding = 3) buffer Sorted { Box sorted[]; };
+layout(std430, binding = 4) buffer Links { uvec4 links[]; };
+layout(std430, binding = 5) buffer Nodes { Box nodes[]; };
+
+// Ties on the key fall back to the slot: the order is the same on every run.
+bool after(uvec2 first, uvec2 second) {
+  return first.x > second.x || (first.x == second.x && first.y > second.y);
+}
+
+bool overlapping(Box first, Box second) {
+  return all(lessThanEqual(first.minimum.xyz, second.maximum.xyz)) &&
+         all(lessThanEqual(second.minimum.xyz, first.maximum.xyz));
+}
+)glsl";
+
+}  // namespace
+
+std::string broadPhaseProgramSource(const char* body) { return std::string(preamble) + body; }
+
+const char* const broadPhaseKeyShader = R"glsl(
 uniform uint slotCount;
 uniform uint paddedCount;
 uniform vec3 origin;
@@ -39,16 +65,9 @@ void main() {
 }
 )glsl";
 
-const char* const broadPhaseLocalSortShader = R"glsl(#version 430
-layout(local_size_x = 256) in;
-layout(std430, binding = 1) buffer Entries { uvec2 entries[]; };
+const char* const broadPhaseLocalSortShader = R"glsl(
 uniform uint mergeStage;
 shared uvec2 block[512];
-
-// Ties on the key fall back to the slot: the order is the same on every run.
-bool after(uvec2 first, uvec2 second) {
-  return first.x > second.x || (first.x == second.x && first.y > second.y);
-}
 
 void main() {
   uint base = gl_WorkGroupID.x * 512u;
@@ -77,15 +96,9 @@ void main() {
 }
 )glsl";
 
-const char* const broadPhaseGlobalStepShader = R"glsl(#version 430
-layout(local_size_x = 256) in;
-layout(std430, binding = 1) buffer Entries { uvec2 entries[]; };
+const char* const broadPhaseGlobalStepShader = R"glsl(
 uniform uint stage;
 uniform uint step;
-
-bool after(uvec2 first, uvec2 second) {
-  return first.x > second.x || (first.x == second.x && first.y > second.y);
-}
 
 void main() {
   uint thread = gl_GlobalInvocationID.x;
@@ -101,12 +114,7 @@ void main() {
 }
 )glsl";
 
-const char* const broadPhaseGatherShader = R"glsl(#version 430
-layout(local_size_x = 256) in;
-struct Box { vec4 minimum; vec4 maximum; };
-layout(std430, binding = 0) readonly buffer Boxes { Box boxes[]; };
-layout(std430, binding = 1) readonly buffer Entries { uvec2 entries[]; };
-layout(std430, binding = 3) writeonly buffer Sorted { Box sorted[]; };
+const char* const broadPhaseGatherShader = R"glsl(
 uniform uint liveCount;
 
 void main() {
@@ -116,10 +124,7 @@ void main() {
 }
 )glsl";
 
-const char* const broadPhaseBuildShader = R"glsl(#version 430
-layout(local_size_x = 256) in;
-layout(std430, binding = 1) readonly buffer Entries { uvec2 entries[]; };
-layout(std430, binding = 4) writeonly buffer Links { uvec4 links[]; };
+const char* const broadPhaseBuildShader = R"glsl(
 uniform int liveCount;
 
 // Length of the common prefix of two sorted keys; equal keys go on with the
@@ -158,12 +163,7 @@ void main() {
 }
 )glsl";
 
-const char* const broadPhaseBoundsShader = R"glsl(#version 430
-layout(local_size_x = 256) in;
-struct Box { vec4 minimum; vec4 maximum; };
-layout(std430, binding = 3) readonly buffer Sorted { Box sorted[]; };
-layout(std430, binding = 4) readonly buffer Links { uvec4 links[]; };
-layout(std430, binding = 5) writeonly buffer Nodes { Box nodes[]; };
+const char* const broadPhaseBoundsShader = R"glsl(
 uniform uint liveCount;
 
 void main() {
@@ -182,21 +182,9 @@ void main() {
 }
 )glsl";
 
-const char* const broadPhaseTraverseShader = R"glsl(#version 430
-layout(local_size_x = 256) in;
-struct Box { vec4 minimum; vec4 maximum; };
-layout(std430, binding = 1) readonly buffer Entries { uvec2 entries[]; };
-layout(std430, binding = 2) buffer Pairs { uint pairCount; uint padding; uvec2 pairs[]; };
-layout(std430, binding = 3) readonly buffer Sorted { Box sorted[]; };
-layout(std430, binding = 4) readonly buffer Links { uvec4 links[]; };
-layout(std430, binding = 5) readonly buffer Nodes { Box nodes[]; };
+const char* const broadPhaseTraverseShader = R"glsl(
 uniform uint liveCount;
 uniform uint capacity;
-
-bool overlapping(Box first, Box second) {
-  return all(lessThanEqual(first.minimum.xyz, second.maximum.xyz)) &&
-         all(lessThanEqual(second.minimum.xyz, first.maximum.xyz));
-}
 
 void main() {
   uint position = gl_GlobalInvocationID.x;

@@ -10,6 +10,7 @@
 // and last leaf below); 5 the internal nodes' boxes (the min's w: the highest
 // role below).
 #include <cstdint>
+#include <string>
 
 namespace physdbg::gpu {
 
@@ -17,6 +18,10 @@ namespace physdbg::gpu {
 // twice as many entries in shared memory.
 inline constexpr std::uint32_t broadPhaseGroupSize = 256;
 inline constexpr std::uint32_t broadPhaseSortBlock = 2 * broadPhaseGroupSize;
+
+// A shader's whole source: the shared version, group size, bindings and
+// helpers, then one of the bodies below.
+std::string broadPhaseProgramSource(const char* body);
 
 // Writes one sort entry per slot up to paddedCount, the code of the box
 // centre in the uniform grid origin + cell / scale; slots without a proxy

@@ -51,6 +51,10 @@ void dispatch(std::uint32_t groups) {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
+render::GlProgram compileShader(const char* body, const char* label) {
+  return render::createComputeProgram(broadPhaseProgramSource(body).c_str(), label);
+}
+
 std::uint32_t groupsFor(std::uint32_t threads) { return (threads + broadPhaseGroupSize - 1) / broadPhaseGroupSize; }
 
 }  // namespace
@@ -64,13 +68,13 @@ GpuBroadPhase::GpuBroadPhase(ComputeContext& context, const DynamicAabbTreeOptio
     throw std::invalid_argument("GpuBroadPhase: velocityPrediction must be finite and >= 0");
   }
   context_.makeCurrent();
-  keyProgram_ = render::createComputeProgram(broadPhaseKeyShader, "broad phase keys");
-  localSortProgram_ = render::createComputeProgram(broadPhaseLocalSortShader, "broad phase local sort");
-  globalStepProgram_ = render::createComputeProgram(broadPhaseGlobalStepShader, "broad phase global step");
-  gatherProgram_ = render::createComputeProgram(broadPhaseGatherShader, "broad phase gather");
-  buildProgram_ = render::createComputeProgram(broadPhaseBuildShader, "broad phase build");
-  boundsProgram_ = render::createComputeProgram(broadPhaseBoundsShader, "broad phase bounds");
-  traverseProgram_ = render::createComputeProgram(broadPhaseTraverseShader, "broad phase traverse");
+  keyProgram_ = compileShader(broadPhaseKeyShader, "broad phase keys");
+  localSortProgram_ = compileShader(broadPhaseLocalSortShader, "broad phase local sort");
+  globalStepProgram_ = compileShader(broadPhaseGlobalStepShader, "broad phase global step");
+  gatherProgram_ = compileShader(broadPhaseGatherShader, "broad phase gather");
+  buildProgram_ = compileShader(broadPhaseBuildShader, "broad phase build");
+  boundsProgram_ = compileShader(broadPhaseBoundsShader, "broad phase bounds");
+  traverseProgram_ = compileShader(broadPhaseTraverseShader, "broad phase traverse");
 }
 
 void GpuBroadPhase::requireProxy(int proxy, const char* operation) const {
@@ -269,8 +273,8 @@ void GpuBroadPhase::searchPairsOnGpu() {
 // room for that count suffices.
 void GpuBroadPhase::readCandidates() {
   for (int attempt = 0; attempt < 2; ++attempt) {
-    const std::uint32_t expected = std::min<std::uint32_t>(
-        pairCapacity_, static_cast<std::uint32_t>(timings_.candidatePairs) / 4 * 5 + 256);
+    const std::uint32_t expected =
+        std::min<std::uint32_t>(pairCapacity_, static_cast<std::uint32_t>(timings_.candidatePairs) / 4 * 5 + 256);
     candidates_.resize(2 + 2 * static_cast<std::size_t>(expected));
     pairList_.download(0, candidates_.data(), candidates_.size() * sizeof(std::uint32_t));
     const std::uint32_t count = candidates_[0];

@@ -1,11 +1,12 @@
 #pragma once
 // The broad phase with its pair search in compute shaders: a linear BVH
 // (Morton codes, bitonic sort, Karras build) rebuilt on the GPU at every
-// findPairs and traversed once per leaf. It answers exactly what TreeBroadPhase answers, so the two can be
-// swapped and compared: fat boxes are kept on the CPU in doubles by the
-// tree's own rule (engine/broadphase/fat_box.h), the GPU sees them as floats
-// rounded outwards (so it can report too many pairs, never too few), and the
-// CPU re-checks every candidate with the exact double test.
+// findPairs and traversed once per leaf. It answers exactly what
+// TreeBroadPhase answers, so the two can be swapped and compared: fat boxes
+// are kept on the CPU in doubles by the tree's own rule
+// (engine/broadphase/fat_box.h), the GPU sees them as floats rounded outwards
+// (so it can report too many pairs, never too few), and the CPU re-checks
+// every candidate with the exact double test.
 #include <cstdint>
 #include <vector>
 
@@ -19,7 +20,8 @@ namespace physdbg::gpu {
 class ComputeContext;
 
 // Where the time of the last findPairs went, and how much crossed the bus.
-// Dispatches are queued, not waited for: their work shows in readbackSeconds.
+// llvmpipe runs each dispatch as it is issued, so there the work shows in
+// dispatchSeconds; a GPU queues them and the wait shows in readbackSeconds.
 struct GpuBroadPhaseTimings {
   double uploadSeconds = 0, dispatchSeconds = 0, readbackSeconds = 0;
   int boxesUploaded = 0;

@@ -73,7 +73,7 @@ Aabb sceneBox(const SceneSpec& spec, std::mt19937& random) {
     case SceneKind::MixedSizes: {
       const double draw = unit(random);
       if (draw < 0.02) return scattered(0.25 * world);  // huge
-      if (draw < 0.3) return scattered(1e-5);            // tiny
+      if (draw < 0.3) return scattered(1e-5);           // tiny
       return scattered(0.05 + 0.4 * unit(random));
     }
     case SceneKind::FarAway: {
@@ -213,8 +213,8 @@ TEST(GpuBroadPhase, PairsAndFatBoxesEqualTheTreeAfterEveryFindPairs) {
     Comparison comparison(spec);
     comparison.run(spec.proxies > 500 ? 12 : 30, tally);
   }
-  std::printf("findPairs calls %lld, pairs compared %lld, mismatches %lld\n", tally.findPairsCalls,
-              tally.pairsCompared, tally.mismatches);
+  std::printf("findPairs calls %lld, pairs compared %lld, mismatches %lld\n", tally.findPairsCalls, tally.pairsCompared,
+              tally.mismatches);
   RecordProperty("findPairsCalls", std::to_string(tally.findPairsCalls));
   RecordProperty("pairsCompared", std::to_string(tally.pairsCompared));
   RecordProperty("mismatches", std::to_string(tally.mismatches));
