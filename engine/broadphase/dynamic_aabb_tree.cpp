@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/broadphase/fat_box.h"
+
 namespace physdbg {
 
 DynamicAabbTree::DynamicAabbTree(const DynamicAabbTreeOptions& options) : options_(options) {
@@ -69,7 +71,7 @@ void DynamicAabbTree::freeNode(int node) {
 int DynamicAabbTree::createProxy(const Aabb& tightBox, std::uint32_t userData) {
   requireValidBox(tightBox, "createProxy");
   const int leaf = allocateNode();
-  nodes_[leaf].box = tightBox.enlarged(options_.margin);
+  nodes_[leaf].box = fattenBox(tightBox, Vec3::Zero(), options_.margin, options_.velocityPrediction);
   userData_[leaf] = userData;
   insertLeaf(leaf);
   ++proxyCount_;
@@ -93,12 +95,7 @@ bool DynamicAabbTree::moveProxy(int proxy, const Aabb& tightBox, const Vec3& dis
   if (!displacement.allFinite()) throw std::invalid_argument("DynamicAabbTree::moveProxy: displacement not finite");
   if (nodes_[proxy].box.contains(tightBox)) return false;
   const int formerSibling = removeLeaf(proxy);
-  Aabb fat = tightBox.enlarged(options_.margin);
-  // Stretch only towards the motion: a body keeps going the way it went.
-  const Vec3 ahead = options_.velocityPrediction * displacement;
-  fat.min += ahead.cwiseMin(Vec3::Zero());
-  fat.max += ahead.cwiseMax(Vec3::Zero());
-  nodes_[proxy].box = fat;
+  nodes_[proxy].box = fattenBox(tightBox, displacement, options_.margin, options_.velocityPrediction);
   insertLeaf(proxy, formerSibling);
   return true;
 }
