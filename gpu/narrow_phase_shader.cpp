@@ -143,65 +143,82 @@ BoxFace boxFaceAlong(vec3 extents, vec3 direction) {
   return face;
 }
 
-const int kPolygonCapacity = 16;
-struct Polygon { vec3 points[kPolygonCapacity]; uvec2 lines[kPolygonCapacity]; int count; };
+// The polygon being clipped, ping-ponged between two halves of one
+// per-invocation array: passing polygons by value made llvmpipe's compile
+// of the shader take many seconds. A point's tag packs the two lines it lies
+// on (box_face.h), first in the low byte.
+const int kPolygonCapacity = 8;
+vec3 clipPoints[2 * kPolygonCapacity];
+uint clipLines[2 * kPolygonCapacity];
+int clipCount[2];
+int clipCurrent = 0;
 
-void push(inout Polygon polygon, vec3 point, uvec2 lines) {
-  if (polygon.count < kPolygonCapacity) {
-    polygon.points[polygon.count] = point;
-    polygon.lines[polygon.count] = lines;
-    ++polygon.count;
+void startPolygon() {
+  clipCurrent = 0;
+  clipCount[0] = 0;
+}
+
+void push(int target, vec3 point, uint lines) {
+  if (clipCount[target] < kPolygonCapacity) {
+    clipPoints[target * kPolygonCapacity + clipCount[target]] = point;
+    clipLines[target * kPolygonCapacity + clipCount[target]] = lines;
+    ++clipCount[target];
   }
 }
 
-void pushCorner(inout Polygon polygon, vec3 point, int corner) {
-  push(polygon, point, uvec2(uint((corner + 3) % 4), uint(corner)));
+uint packLines(uint first, uint second) { return first | (second << 8); }
+
+void pushCorner(vec3 point, int corner) { push(clipCurrent, point, packLines(uint((corner + 3) % 4), uint(corner))); }
+
+uint sharedLine(uint from, uint to) {
+  uint fromFirst = from & 0xFFu, fromSecond = from >> 8;
+  if (fromFirst == (to & 0xFFu) || fromFirst == (to >> 8)) return fromFirst;
+  return fromSecond;
 }
 
-uint sharedLine(uvec2 from, uvec2 to) {
-  if (from.x == to.x || from.x == to.y) return from.x;
-  return from.y;
-}
-
-uint clipTag(uvec2 lines) {
-  uint first = min(lines.x, lines.y), second = max(lines.x, lines.y);
+uint clipTag(uint lines) {
+  uint first = min(lines & 0xFFu, lines >> 8), second = max(lines & 0xFFu, lines >> 8);
   if (second < 4u) return (second - first == 1u ? second : first) + 1u;
   return 0x800u | (first * 8u + second);
 }
 
-Polygon clipAgainstPlane(Polygon polygon, int coordinate, float sign, float limit, uint line) {
-  Polygon clipped;
-  clipped.count = 0;
-  int count = polygon.count;
+int polygonCount() { return clipCount[clipCurrent]; }
+vec3 polygonPoint(int i) { return clipPoints[clipCurrent * kPolygonCapacity + i]; }
+uint polygonLines(int i) { return clipLines[clipCurrent * kPolygonCapacity + i]; }
+
+void clipAgainstPlane(int coordinate, float sign, float limit, uint line) {
+  int source = clipCurrent, target = 1 - clipCurrent;
+  clipCount[target] = 0;
+  int count = clipCount[source];
+  int edges = count == 2 ? 1 : (count == 1 ? 0 : count);
   if (count == 1) {
-    if (sign * polygon.points[0][coordinate] - limit <= 0.0) push(clipped, polygon.points[0], polygon.lines[0]);
-    return clipped;
+    vec3 point = clipPoints[source * kPolygonCapacity];
+    if (sign * point[coordinate] - limit <= 0.0) push(target, point, clipLines[source * kPolygonCapacity]);
   }
-  int edges = count == 2 ? 1 : count;
   for (int i = 0; i < edges; ++i) {
     int next = (i + 1) % count;
-    float distanceCurrent = sign * polygon.points[i][coordinate] - limit;
-    float distanceNext = sign * polygon.points[next][coordinate] - limit;
-    if (distanceCurrent <= 0.0) push(clipped, polygon.points[i], polygon.lines[i]);
+    vec3 current = clipPoints[source * kPolygonCapacity + i], following = clipPoints[source * kPolygonCapacity + next];
+    uint currentLines = clipLines[source * kPolygonCapacity + i];
+    uint followingLines = clipLines[source * kPolygonCapacity + next];
+    float distanceCurrent = sign * current[coordinate] - limit;
+    float distanceNext = sign * following[coordinate] - limit;
+    if (distanceCurrent <= 0.0) push(target, current, currentLines);
     if ((distanceCurrent < 0.0) != (distanceNext < 0.0) && distanceCurrent != distanceNext) {
       float t = distanceCurrent / (distanceCurrent - distanceNext);
-      vec3 point = polygon.points[i] + t * (polygon.points[next] - polygon.points[i]);
-      push(clipped, point, uvec2(sharedLine(polygon.lines[i], polygon.lines[next]), line));
+      push(target, current + t * (following - current), packLines(sharedLine(currentLines, followingLines), line));
     }
-    if (count == 2 && distanceNext <= 0.0) push(clipped, polygon.points[next], polygon.lines[next]);
+    if (count == 2 && distanceNext <= 0.0) push(target, following, followingLines);
   }
-  return clipped;
+  clipCurrent = target;
 }
 
-Polygon clipToFaceSides(BoxFace face, float tolerance, Polygon polygon) {
+void clipToFaceSides(BoxFace face, float tolerance) {
   vec3 extents = abs(face.corners[0]);
   int u = (face.axis + 1) % 3, v = (face.axis + 2) % 3;
-  const ivec4 coordinates = ivec4(v, u, v, u);
-  const vec4 signs = vec4(face.sign, -1.0, -face.sign, 1.0);
-  for (int side = 0; side < 4 && polygon.count > 0; ++side)
-    polygon = clipAgainstPlane(polygon, coordinates[side], signs[side], extents[coordinates[side]] + tolerance,
-                               uint(4 + side));
-  return polygon;
+  ivec4 coordinates = ivec4(v, u, v, u);
+  vec4 signs = vec4(face.sign, -1.0, -face.sign, 1.0);
+  for (int side = 0; side < 4 && polygonCount() > 0; ++side)
+    clipAgainstPlane(coordinates[side], signs[side], extents[coordinates[side]] + tolerance, uint(4 + side));
 }
 
 // ---- box against box by separating axes (box_box_contact.cpp), in A's frame
@@ -285,15 +302,14 @@ FacePoints deepestClippedPoint(vec3 referenceHalf, vec3 referenceDirection, vec3
     deepest.found = true;
   } else {
     BoxFace incidentFace = boxFaceAlong(incidentHalf, incidentDirection);
-    Polygon polygon;
-    polygon.count = 0;
-    for (int i = 0; i < 4; ++i) pushCorner(polygon, incidentRotation * incidentFace.corners[i] + incidentOffset, i);
-    polygon = clipToFaceSides(referenceFace, 0.0, polygon);
-    for (int k = 0; k < polygon.count; ++k) {
-      float separation = referenceFace.sign * polygon.points[k][axis] - referenceHalf[axis];
+    startPolygon();
+    for (int i = 0; i < 4; ++i) pushCorner(incidentRotation * incidentFace.corners[i] + incidentOffset, i);
+    clipToFaceSides(referenceFace, 0.0);
+    for (int k = 0; k < polygonCount(); ++k) {
+      float separation = referenceFace.sign * polygonPoint(k)[axis] - referenceHalf[axis];
       if (separation >= deepest.separation) continue;
       deepest.separation = separation;
-      deepest.onIncident = polygon.points[k];
+      deepest.onIncident = polygonPoint(k);
       deepest.found = true;
     }
   }
@@ -368,15 +384,15 @@ Contact collideBoxes(PairFrame pair) {
 // ---- the box-box manifold (box_box_manifold.cpp), points relative to A's position
 
 struct Manifold { vec3 normal; int count; vec4 pointA[4]; vec3 pointB[4]; uint featureIds[4]; };
+// The invocation's manifold, written in place rather than returned (see the polygon).
+Manifold manifold;
 
-Manifold singlePoint(Contact contact) {
-  Manifold manifold;
+void singlePoint(Contact contact) {
   manifold.normal = contact.normal;
   manifold.count = 1;
   manifold.pointA[0] = vec4(contact.pointA, dot(contact.pointB - contact.pointA, contact.normal));
   manifold.pointB[0] = contact.pointB;
   manifold.featureIds[0] = 0u;
-  return manifold;
 }
 
 uint featureBase(bool referenceIsA, int referenceIndex, int incidentIndex) {
@@ -384,13 +400,15 @@ uint featureBase(bool referenceIsA, int referenceIndex, int incidentIndex) {
 }
 
 struct Candidate { vec3 pointA; vec3 pointB; float separation; uint featureId; };
+// Per invocation, like the polygon: copies of arrays are what llvmpipe compiles slowly.
+Candidate candidates[kPolygonCapacity];
 
 float signedArea(Candidate p, Candidate q, Candidate r, vec3 normal) {
   return dot(cross(q.pointB - p.pointB, r.pointB - p.pointB), normal);
 }
 
 // manifold_points.cpp reduceToFour over up to 16 candidates.
-void reduceToFour(inout Manifold manifold, Candidate candidates[kPolygonCapacity], int count) {
+void reduceToFour(int count) {
   float spread = 0.0;
   for (int i = 1; i < count; ++i) spread = max(spread, length(candidates[i].pointB - candidates[0].pointB));
   float lengthMargin = kReductionTieMargin * spread, areaMargin = kReductionTieMargin * spread * spread;
@@ -437,7 +455,7 @@ void reduceToFour(inout Manifold manifold, Candidate candidates[kPolygonCapacity
 }
 
 // `contact` in world axes relative to A's position; rotations world from body.
-Manifold boxBoxManifold(vec3 halfA, mat3 rotationA, vec3 halfB, mat3 rotationB, vec3 offset, Contact contact,
+void boxBoxManifold(vec3 halfA, mat3 rotationA, vec3 halfB, mat3 rotationB, vec3 offset, Contact contact,
                         float reach) {
   vec3 directionA = transpose(rotationA) * contact.normal;
   vec3 directionB = -(transpose(rotationB) * contact.normal);
@@ -446,7 +464,10 @@ Manifold boxBoxManifold(vec3 halfA, mat3 rotationA, vec3 halfB, mat3 rotationB, 
   float alignmentA = faceA.sign * directionA[faceA.axis] / length(directionA);
   float alignmentB = faceB.sign * directionB[faceB.axis] / length(directionB);
   bool referenceIsA = alignmentA >= alignmentB - kReferenceFaceHysteresis;
-  if ((referenceIsA ? alignmentA : alignmentB) < kMinimumFaceAlignment) return singlePoint(contact);
+  if ((referenceIsA ? alignmentA : alignmentB) < kMinimumFaceAlignment) {
+    singlePoint(contact);
+    return;
+  }
   vec3 referenceHalf = referenceIsA ? halfA : halfB;
   mat3 referenceRotation = referenceIsA ? rotationA : rotationB;
   vec3 referencePosition = referenceIsA ? vec3(0.0) : offset;
@@ -456,21 +477,18 @@ Manifold boxBoxManifold(vec3 halfA, mat3 rotationA, vec3 halfB, mat3 rotationB, 
   BoxFace incidentFace = referenceIsA ? faceB : faceA;
   mat3 relativeRotation = transpose(referenceRotation) * incidentRotation;
   vec3 relativeOffset = transpose(referenceRotation) * (incidentPosition - referencePosition);
-  Polygon polygon;
-  polygon.count = 0;
-  for (int i = 0; i < 4; ++i) pushCorner(polygon, relativeRotation * incidentFace.corners[i] + relativeOffset, i);
+  startPolygon();
+  for (int i = 0; i < 4; ++i) pushCorner(relativeRotation * incidentFace.corners[i] + relativeOffset, i);
   float largestHalf = max(referenceHalf.x, max(referenceHalf.y, referenceHalf.z));
-  polygon = clipToFaceSides(referenceFace, kClipTolerance + kClipRoundOff * largestHalf, polygon);
+  clipToFaceSides(referenceFace, kClipTolerance + kClipRoundOff * largestHalf);
 
   vec3 faceNormal = referenceFace.sign * referenceRotation[referenceFace.axis];
-  Manifold manifold;
   manifold.normal = referenceIsA ? faceNormal : -faceNormal;
   float faceOffset = referenceHalf[referenceFace.axis];
   uint base = featureBase(referenceIsA, referenceFace.index, incidentFace.index);
-  Candidate candidates[kPolygonCapacity];
   int kept = 0;
-  for (int i = 0; i < polygon.count; ++i) {
-    vec3 onIncident = polygon.points[i];
+  for (int i = 0; i < polygonCount(); ++i) {
+    vec3 onIncident = polygonPoint(i);
     float separation = referenceFace.sign * onIncident[referenceFace.axis] - faceOffset;
     if (separation > reach) continue;
     vec3 onReference = onIncident;
@@ -479,10 +497,13 @@ Manifold boxBoxManifold(vec3 halfA, mat3 rotationA, vec3 halfB, mat3 rotationB, 
     vec3 worldReference = referencePosition + referenceRotation * onReference;
     candidates[kept] = Candidate(referenceIsA ? worldReference : worldIncident,
                                  referenceIsA ? worldIncident : worldReference, separation,
-                                 base | clipTag(polygon.lines[i]));
+                                 base | clipTag(polygonLines(i)));
     ++kept;
   }
-  if (kept == 0) return singlePoint(contact);
+  if (kept == 0) {
+    singlePoint(contact);
+    return;
+  }
   if (kept <= 4) {
     manifold.count = kept;
     for (int i = 0; i < kept; ++i) {
@@ -490,10 +511,9 @@ Manifold boxBoxManifold(vec3 halfA, mat3 rotationA, vec3 halfB, mat3 rotationB, 
       manifold.pointB[i] = candidates[i].pointB;
       manifold.featureIds[i] = candidates[i].featureId;
     }
-    return manifold;
+    return;
   }
-  reduceToFour(manifold, candidates, kept);
-  return manifold;
+  reduceToFour(kept);
 }
 
 // ---- one request
@@ -515,7 +535,6 @@ void main() {
   mat3 rotationA = rotationMatrix(poseA.rotation), rotationB = rotationMatrix(poseB.rotation);
   uint kindA = uint(shapeA.w), kindB = uint(shapeB.w);
   Contact contact;
-  Manifold manifold;
   uint flags = 0u;
   if (kindA == kBox && kindB == kBox) {
     PairFrame pair;
@@ -526,7 +545,7 @@ void main() {
     pair.offset = transpose(rotationA) * offset;
     pair.size = length(pair.halfA) + length(pair.halfB);
     contact = toWorld(collideBoxes(pair), rotationA);
-    manifold = boxBoxManifold(shapeA.xyz, rotationA, shapeB.xyz, rotationB, offset, contact, reach);
+    boxBoxManifold(shapeA.xyz, rotationA, shapeB.xyz, rotationB, offset, contact, reach);
     flags |= kFlagBoxBox;
   } else {
     if (kindA == kSphere && kindB == kSphere) contact = collideSpheres(shapeA.x, shapeB.x, offset);
@@ -534,7 +553,7 @@ void main() {
     else if (kindB == kBox) contact = swapped(collideBoxSphere(shapeB.xyz, rotationB, offset, shapeA.x, vec3(0.0)));
     else if (kindA == kCapsule) contact = collideCapsuleSphere(shapeA.xy, rotationA, vec3(0.0), shapeB.x, offset);
     else contact = swapped(collideCapsuleSphere(shapeB.xy, rotationB, offset, shapeA.x, vec3(0.0)));
-    manifold = singlePoint(contact);
+    singlePoint(contact);
   }
   if (contact.needsCpu) flags |= kFlagNeedsCpu;
   Result result;

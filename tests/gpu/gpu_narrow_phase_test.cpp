@@ -248,8 +248,29 @@ double signedDistance(const ContactResult& result) {
   return result.status == ContactStatus::Penetrating ? -result.depth : 0.0;
 }
 
+// Whether a single-point manifold's points are as good a witness as the
+// CPU's: on both shapes' supporting planes along the normal, inside the
+// boxes' faces, and apart along the normal only. A box lying flat on a face
+// has four equally deep corners and the choice among them is round-off.
+bool equallyGoodWitness(const Pair& pair, const Vec3& normal, const ManifoldPoint& point, double tolerance) {
+  const auto onSupport = [&](const Collider& collider, const Transform& transform, const Vec3& direction,
+                             const Vec3& candidate) {
+    const double plane = collider.support(transform, direction).dot(direction);
+    bool inside = std::abs(candidate.dot(direction) - plane) <= tolerance;
+    if (collider.kind() == ColliderKind::Box) {
+      const Vec3 local = transform.applyInverse(candidate).cwiseAbs();
+      const Vec3& half = static_cast<const BoxCollider&>(collider).halfExtents();
+      inside = inside && (local - half).maxCoeff() <= tolerance;
+    }
+    return inside;
+  };
+  const Vec3 gap = point.pointB - point.pointA;
+  return onSupport(*pair.a, pair.ta, normal, point.pointA) && onSupport(*pair.b, pair.tb, -normal, point.pointB) &&
+         (gap - gap.dot(normal) * normal).norm() <= tolerance;
+}
+
 struct Differences {
-  int pairs = 0, points = 0, statusWithinTolerance = 0, featureIdDifferences = 0, failures = 0;
+  int pairs = 0, points = 0, statusWithinTolerance = 0, featureIdDifferences = 0, tiedWitnesses = 0, failures = 0;
   double normal = 0, depth = 0, point = 0, separation = 0;  // largest, relative to size (normal absolute)
 };
 
@@ -296,6 +317,11 @@ class Comparison {
       separation = std::max(separation, std::abs(mine.separation - theirs.separation) / size);
       if (mine.featureId != theirs.featureId) ++idDifferences;
     }
+    if (point > kPointTolerance && manifold.pointCount == 1 && gpu.manifold.pointCount == 1 &&
+        equallyGoodWitness(pair, cpu.normal, gpu.manifold.points[0], kPointTolerance * size)) {
+      for (Differences* differences : {&total, &category}) ++differences->tiedWitnesses;
+      point = 0;  // another of equally deep points: not a difference
+    }
     if (point > kPointTolerance) why += " points";
     if (separation > kDepthTolerance) why += " separation";
     for (Differences* differences : {&total, &category}) {
@@ -326,9 +352,9 @@ class Comparison {
   static void printLine(const std::string& name, const Differences& d) {
     std::printf(
         "  %-24s pairs %5d points %5d | largest: normal %.2e depth %.2e point %.2e separation %.2e (x size) | "
-        "status near zero %d, feature ids differing %d, failures %d\n",
+        "status near zero %d, feature ids differing %d, tied witnesses %d, failures %d\n",
         name.c_str(), d.pairs, d.points, d.normal, d.depth, d.point, d.separation, d.statusWithinTolerance,
-        d.featureIdDifferences, d.failures);
+        d.featureIdDifferences, d.tiedWitnesses, d.failures);
   }
 
   ManifoldScratch scratch_;
@@ -337,11 +363,26 @@ class Comparison {
   int reported_ = 0;
 };
 
+// One context and program for the suite: llvmpipe compiles the shader at its
+// first dispatch (seconds without Mesa's disk cache).
 class GpuNarrowPhaseTest : public ::testing::Test {
  protected:
-  ComputeContext context{render::Backend::OsMesa};
-  GpuNarrowPhase narrowPhase{context};
+  static void SetUpTestSuite() {
+    shared_ = new Shared;
+  }
+  static void TearDownTestSuite() {
+    delete shared_;
+    shared_ = nullptr;
+  }
+  struct Shared {
+    ComputeContext context{render::Backend::OsMesa};
+    GpuNarrowPhase narrowPhase{context};
+  };
+  static Shared* shared_;
+  ComputeContext& context = shared_->context;
+  GpuNarrowPhase& narrowPhase = shared_->narrowPhase;
 };
+GpuNarrowPhaseTest::Shared* GpuNarrowPhaseTest::shared_ = nullptr;
 
 void recordFigures(const Differences& d, const std::string& prefix) {
   ::testing::Test::RecordProperty(prefix + "pairs", d.pairs);
@@ -412,8 +453,7 @@ TEST_F(GpuNarrowPhaseTest, TwoSpheresOverlappingByATenthGiveThatDepthAlongTheirC
 }
 
 TEST_F(GpuNarrowPhaseTest, UploadsOnlyThePosesThatChanged) {
-  const Batch first = batchOf(randomScenes(7u, Vec3::Zero(), 5.0));
-  Batch batch = first;
+  Batch batch = batchOf(randomScenes(7u, Vec3(3.0, 0.0, 0.0), 5.0));  // poses no other test used
   std::vector<GpuContact> out;
   narrowPhase.collide(batch.bodies, batch.requests, out);
   EXPECT_EQ(narrowPhase.lastTimings().posesUploaded, static_cast<int>(batch.bodies.size()));
