@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/capsule_collider.h"
@@ -15,7 +16,15 @@
 
 namespace physdbg::gpu {
 
-// One request's answer as the shader writes it.
+struct GpuPose {
+  float high[4], low[4], rotation[4];  // position as high part and remainder; unit quaternion xyzw
+};
+
+struct GpuShape {
+  float parameters[4];  // w: ColliderKind
+  bool operator==(const GpuShape&) const = default;
+};
+
 struct GpuNarrowPhase::GpuResult {
   float normal[4];  // w: signed distance
   float pointA[4], pointB[4];
@@ -54,14 +63,22 @@ GpuShape shapeOf(const Collider& collider) {
   return shape;
 }
 
-// High part and remainder: their float sum carries about 48 bits.
+// A double as a high part with float's 24 bits and the remainder: their
+// sum carries about 48 bits. The high part comes from Veltkamp's split, not
+// from double(float(value)): GCC 12.2 at -O3 vectorizes that round trip
+// into nothing (the remainder came out zero for two of three coordinates).
+void splitDouble(double value, float& high, float& low) {
+  constexpr double splitter = 536870913.0;  // 2^29 + 1: keeps 53 - 29 = 24 bits
+  const double scaled = value * splitter;
+  const double rounded = scaled - (scaled - value);
+  high = static_cast<float>(rounded);  // exact
+  low = static_cast<float>(value - rounded);
+}
+
 GpuPose poseOf(const Transform& transform) {
   GpuPose pose{};
   const Quat rotation = transform.rotation.normalized();
-  for (int i = 0; i < 3; ++i) {
-    pose.high[i] = static_cast<float>(transform.position[i]);
-    pose.low[i] = static_cast<float>(transform.position[i] - static_cast<double>(pose.high[i]));
-  }
+  for (int i = 0; i < 3; ++i) splitDouble(transform.position[i], pose.high[i], pose.low[i]);
   const float quaternion[4] = {static_cast<float>(rotation.x()), static_cast<float>(rotation.y()),
                                static_cast<float>(rotation.z()), static_cast<float>(rotation.w())};
   std::memcpy(pose.rotation, quaternion, sizeof quaternion);
@@ -99,6 +116,9 @@ GpuNarrowPhase::GpuNarrowPhase(ComputeContext& context) : context_(context) {
   program_ = render::createComputeProgram(narrowPhaseShaderSource(), "narrow phase");
 }
 
+// The program and buffers are GL names of this context.
+GpuNarrowPhase::~GpuNarrowPhase() { context_.makeCurrent(); }
+
 bool GpuNarrowPhase::supports(ColliderKind a, ColliderKind b) {
   const auto sphereWith = [](ColliderKind other) {
     return other == ColliderKind::Sphere || other == ColliderKind::Box || other == ColliderKind::Capsule;
@@ -114,7 +134,7 @@ void GpuNarrowPhase::collide(const std::vector<RigidBody>& bodies, const std::ve
   timings_ = {};
   const Clock::time_point start = Clock::now();
   uploadBodies(bodies);
-  uploadRequests(requests);
+  uploadRequests(bodies, requests);
   timings_.uploadSeconds = secondsSince(start);
   const Clock::time_point dispatched = Clock::now();
   dispatch(requests.size());
@@ -135,7 +155,10 @@ void GpuNarrowPhase::uploadBodies(const std::vector<RigidBody>& bodies) {
   const bool posesLost = poses_.capacity() != poseCapacity, shapesLost = shapes_.capacity() != shapeCapacity;
   poseStaging_.resize(count);
   shapeStaging_.resize(count);
-  std::vector<bool> poseChanged(count), shapeChanged(count);
+  std::vector<bool>& poseChanged = poseChanged_;
+  std::vector<bool>& shapeChanged = shapeChanged_;
+  poseChanged.assign(count, false);
+  shapeChanged.assign(count, false);
   for (std::size_t i = 0; i < count; ++i) {
     const Transform transform = bodies[i].transform();
     const GpuShape shape = shapeOf(bodies[i].collider());
@@ -152,9 +175,15 @@ void GpuNarrowPhase::uploadBodies(const std::vector<RigidBody>& bodies) {
   uploadedShapes_ = shapeStaging_;
 }
 
-void GpuNarrowPhase::uploadRequests(const std::vector<NarrowPhaseRequest>& requests) {
+void GpuNarrowPhase::uploadRequests(const std::vector<RigidBody>& bodies,
+                                    const std::vector<NarrowPhaseRequest>& requests) {
   requestStaging_.resize(requests.size() * 4);
   for (std::size_t i = 0; i < requests.size(); ++i) {
+    const NarrowPhaseRequest& request = requests[i];
+    if (request.a >= request.b || request.b >= bodies.size())
+      throw std::invalid_argument("GpuNarrowPhase: request " + std::to_string(i) + " needs body ids a < b < body count");
+    if (!supports(bodies[request.a].collider().kind(), bodies[request.b].collider().kind()))
+      throw std::invalid_argument("GpuNarrowPhase: request " + std::to_string(i) + " pairs shapes the GPU does not collide");
     const float reach = static_cast<float>(requests[i].reach);
     std::uint32_t reachBits;
     std::memcpy(&reachBits, &reach, sizeof reachBits);

@@ -18,6 +18,9 @@
 //    capsule's core (the CPU asks EPA) are flagged by the shader and answered
 //    by the CPU path here, so their results are the CPU's own;
 //    lastTimings().cpuFallbacks counts them.
+//  - A clipped polygon holds 8 points (the CPU's 16 leave room for
+//    round-off bending a nearly edge-on face; a quad clipped by a rectangle
+//    has at most 8), so such a pair may keep other points than the CPU.
 //  - Touching and Penetrating may disagree with the CPU where the signed
 //    distance is within float round-off of the touching tolerance.
 #include <cstdint>
@@ -50,24 +53,24 @@ struct GpuNarrowPhaseTimings {
   int cpuFallbacks = 0;  // pairs the shader flagged and the CPU path answered (see above)
 };
 
-// Float records as the shader reads them (std430, narrow_phase_shader.cpp).
-struct GpuPose {
-  float high[4], low[4], rotation[4];
-};
-struct GpuShape {
-  float parameters[4];  // w: ColliderKind
-  bool operator==(const GpuShape&) const = default;
-};
+// Records as the shader reads them (narrow_phase_shader.cpp); defined in
+// gpu_narrow_phase.cpp, the only place that fills them.
+struct GpuPose;
+struct GpuShape;
 
 class GpuNarrowPhase {
  public:
   // Compiles the program; throws std::runtime_error with the log on failure.
   explicit GpuNarrowPhase(ComputeContext& context);
+  ~GpuNarrowPhase();
+  GpuNarrowPhase(const GpuNarrowPhase&) = delete;
+  GpuNarrowPhase& operator=(const GpuNarrowPhase&) = delete;
 
   static bool supports(ColliderKind a, ColliderKind b);
 
-  // out[i] answers requests[i]; every request must be supported. Makes the
-  // context current. Shapes go up when a body is first seen or its collider
+  // out[i] answers requests[i]. Throws std::invalid_argument for a request
+  // that is not supported or names a body out of range. Makes the context
+  // current. Shapes go up when a body is first seen or its collider
   // changes, poses when its transform changed since the last call.
   void collide(const std::vector<RigidBody>& bodies, const std::vector<NarrowPhaseRequest>& requests,
                std::vector<GpuContact>& out);
@@ -75,7 +78,7 @@ class GpuNarrowPhase {
 
  private:
   void uploadBodies(const std::vector<RigidBody>& bodies);
-  void uploadRequests(const std::vector<NarrowPhaseRequest>& requests);
+  void uploadRequests(const std::vector<RigidBody>& bodies, const std::vector<NarrowPhaseRequest>& requests);
   void dispatch(std::size_t requestCount);
   void convert(const std::vector<RigidBody>& bodies, const std::vector<NarrowPhaseRequest>& requests,
                std::vector<GpuContact>& out);
@@ -90,6 +93,7 @@ class GpuNarrowPhase {
   std::vector<GpuShape> uploadedShapes_;
   std::vector<GpuPose> poseStaging_;
   std::vector<GpuShape> shapeStaging_;
+  std::vector<bool> poseChanged_, shapeChanged_;
   std::vector<std::uint32_t> requestStaging_;
   std::vector<unsigned char> resultStaging_;
   ManifoldScratch scratch_;

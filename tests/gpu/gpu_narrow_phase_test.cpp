@@ -485,6 +485,17 @@ TEST_F(GpuNarrowPhaseTest, OneDispatchOfAThousandPairs) {
   EXPECT_GT(timings.dispatchSeconds, 0.0);
 }
 
+TEST_F(GpuNarrowPhaseTest, RefusesPairsItCannotCollideAndBodiesOutOfRange) {
+  const Batch capsules = batchOf({{"capsules", capsule(0.5, 1.0), capsule(0.5, 1.0), {Vec3::Zero(), Quat::Identity()},
+                                   {Vec3(0.0, 0.5, 0.0), Quat::Identity()}, 0.05}});
+  std::vector<GpuContact> out;
+  EXPECT_THROW(narrowPhase.collide(capsules.bodies, capsules.requests, out), std::invalid_argument);
+  Batch spheres = batchOf({{"spheres", sphere(1.0), sphere(1.0), {Vec3::Zero(), Quat::Identity()},
+                            {Vec3(1.5, 0.0, 0.0), Quat::Identity()}, 0.05}});
+  spheres.requests[0].b = 2;
+  EXPECT_THROW(narrowPhase.collide(spheres.bodies, spheres.requests, out), std::invalid_argument);
+}
+
 TEST(GpuNarrowPhaseSupport, SpheresWithEverythingButMeshesAndBoxesWithBoxes) {
   using K = ColliderKind;
   EXPECT_TRUE(GpuNarrowPhase::supports(K::Sphere, K::Sphere));
