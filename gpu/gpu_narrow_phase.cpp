@@ -214,39 +214,42 @@ void GpuNarrowPhase::convert(const std::vector<RigidBody>& bodies, const std::ve
                              std::vector<GpuContact>& out) {
   out.resize(requests.size());
   const auto* results = reinterpret_cast<const GpuResult*>(resultStaging_.data());
-  const NarrowPhaseOptions defaults;
   for (std::size_t i = 0; i < requests.size(); ++i) {
-    const GpuResult& gpu = results[i];
     const RigidBody& bodyA = bodies[requests[i].a];
     const RigidBody& bodyB = bodies[requests[i].b];
-    const Transform ta = bodyA.transform(), tb = bodyB.transform();
     GpuContact& contact = out[i];
     contact.manifold = ContactManifold{};
     contact.manifold.a = requests[i].a;
     contact.manifold.b = requests[i].b;
-    if (gpu.flags[0] & kFlagNeedsCpu) {
+    if (results[i].flags[0] & kFlagNeedsCpu) {
+      const Transform ta = bodyA.transform(), tb = bodyB.transform();
       contact.result = physdbg::collide(bodyA.collider(), ta, bodyB.collider(), tb);
       buildManifold(bodyA.collider(), ta, bodyB.collider(), tb, contact.result, requests[i].reach, scratch_,
                     contact.manifold);
       ++timings_.cpuFallbacks;
-      continue;
+    } else {
+      fromShader(results[i], bodyA.transform(), bodyB.transform(), contact);
     }
-    const Vec3& origin = ta.position;
-    contact.result = classifyContact(gpu.normal[3], toVec3(gpu.normal).normalized(), origin + toVec3(gpu.pointA),
-                                     origin + toVec3(gpu.pointB), defaults.touchingTolerance);
-    contact.result.usedBoxBox = (gpu.flags[0] & kFlagBoxBox) != 0;
-    ContactManifold& manifold = contact.manifold;
-    manifold.normal = toVec3(gpu.manifoldNormal).normalized();
-    manifold.pointCount = static_cast<int>(gpu.manifoldNormal[3]);
-    for (int k = 0; k < manifold.pointCount; ++k) {
-      ManifoldPoint& point = manifold.points[k];
-      point.pointA = origin + toVec3(gpu.manifoldA[k]);
-      point.pointB = origin + toVec3(gpu.manifoldB[k]);
-      point.localA = ta.applyInverse(point.pointA);
-      point.localB = tb.applyInverse(point.pointB);
-      point.separation = gpu.manifoldA[k][3];
-      point.featureId = gpu.featureIds[k];
-    }
+  }
+}
+
+// Points come relative to A's position: A's double position goes back on here.
+void GpuNarrowPhase::fromShader(const GpuResult& gpu, const Transform& ta, const Transform& tb, GpuContact& contact) {
+  const Vec3& origin = ta.position;
+  contact.result = classifyContact(gpu.normal[3], toVec3(gpu.normal).normalized(), origin + toVec3(gpu.pointA),
+                                   origin + toVec3(gpu.pointB), NarrowPhaseOptions{}.touchingTolerance);
+  contact.result.usedBoxBox = (gpu.flags[0] & kFlagBoxBox) != 0;
+  ContactManifold& manifold = contact.manifold;
+  manifold.normal = toVec3(gpu.manifoldNormal).normalized();
+  manifold.pointCount = static_cast<int>(gpu.manifoldNormal[3]);
+  for (int k = 0; k < manifold.pointCount; ++k) {
+    ManifoldPoint& point = manifold.points[k];
+    point.pointA = origin + toVec3(gpu.manifoldA[k]);
+    point.pointB = origin + toVec3(gpu.manifoldB[k]);
+    point.localA = ta.applyInverse(point.pointA);
+    point.localB = tb.applyInverse(point.pointB);
+    point.separation = gpu.manifoldA[k][3];
+    point.featureId = gpu.featureIds[k];
   }
 }
 

@@ -66,6 +66,8 @@ class GpuNarrowPhase {
   GpuNarrowPhase(const GpuNarrowPhase&) = delete;
   GpuNarrowPhase& operator=(const GpuNarrowPhase&) = delete;
 
+  // Sphere-sphere, sphere-box, sphere-capsule, box-box (either order).
+  // Anything else (convex meshes, capsule-capsule, capsule-box) stays on the CPU.
   static bool supports(ColliderKind a, ColliderKind b);
 
   // out[i] answers requests[i]. Throws std::invalid_argument for a request
@@ -82,8 +84,9 @@ class GpuNarrowPhase {
   void dispatch(std::size_t requestCount);
   void convert(const std::vector<RigidBody>& bodies, const std::vector<NarrowPhaseRequest>& requests,
                std::vector<GpuContact>& out);
-
   struct GpuResult;
+  static void fromShader(const GpuResult& gpu, const Transform& ta, const Transform& tb, GpuContact& contact);
+
   ComputeContext& context_;
   render::GlProgram program_;
   StorageBuffer poses_{"narrow phase poses"}, shapes_{"narrow phase shapes"};

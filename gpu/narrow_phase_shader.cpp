@@ -14,11 +14,15 @@ layout(local_size_x = 64) in;
 const uint kSphere = 0u, kBox = 1u, kCapsule = 2u;
 const uint kFlagBoxBox = 1u, kFlagNeedsCpu = 2u;
 
-// analytic fast paths: none; box_box_contact.cpp kParallelSine (1e-8 for double)
+// box_box_contact.cpp kParallelSine (1e-8 for double): float's direction
+// error eps / sine balances the axis left out (sine * size) near 1e-3-1e-4;
+// a nearly parallel edge pair that is not the best axis cannot win anyway.
 const float kParallelSine = 1e-3;
-// kTieTolerance (1e-10 of the pair's size for double)
+// kTieTolerance (1e-10 of the pair's size for double): a face of A beats a
+// face of B, a face an edge, within it; float round-off is about 1e-7
 const float kTieTolerance = 1e-6;
-// kWitnessTolerance (1e-10 of the pair's size for double)
+// kWitnessTolerance (1e-10 of the pair's size for double); too strict a
+// value only sends more separated pairs to the CPU, which is exact
 const float kWitnessTolerance = 1e-6;
 // NarrowPhaseOptions::touchingTolerance, metres
 const float kTouchingTolerance = 1e-6;
@@ -34,7 +38,7 @@ const float kReductionTieMargin = 1e-5;
 const float kDegenerateCore = 1e-5;
 
 struct Pose { vec4 high; vec4 low; vec4 rotation; };  // rotation: unit quaternion xyzw
-struct Shape { vec4 parameters; };  // box: extents extents; sphere: radius; capsule: radius, extents height; w: kind
+struct Shape { vec4 parameters; };  // box: half extents; sphere: radius; capsule: radius, half height; w: kind
 struct Request { uvec4 bodies; };   // a, b, reach (float bits), unused
 struct Result {
   vec4 normal;          // xyz: A to B, world; w: signed distance
