@@ -50,6 +50,8 @@ double boundingRadius(const Collider& collider) {
   }
 }
 
+// Braces wherever one expression draws several numbers: they are evaluated
+// left to right, so every compiler builds the same scenes from a seed.
 class SceneMaker {
  public:
   explicit SceneMaker(unsigned seed) : random_(seed) {}
@@ -59,11 +61,11 @@ class SceneMaker {
   Vec3 uniformVec(double extent) { return {uniform(-extent, extent), uniform(-extent, extent), uniform(-extent, extent)}; }
   Vec3 unit() {
     std::normal_distribution<double> normal;
-    return Vec3(normal(random_), normal(random_), normal(random_)).normalized();
+    return Vec3{normal(random_), normal(random_), normal(random_)}.normalized();
   }
   Quat rotation() {
     std::normal_distribution<double> normal;
-    return Quat(normal(random_), normal(random_), normal(random_), normal(random_)).normalized();
+    return Quat{normal(random_), normal(random_), normal(random_), normal(random_)}.normalized();
   }
   Quat yaw() { return Quat(Eigen::AngleAxisd(uniform(-M_PI, M_PI), Vec3::UnitY())); }
   Vec3 halfExtents(double low, double high) { return {uniform(low, high), uniform(low, high), uniform(low, high)}; }
@@ -145,7 +147,7 @@ void addBoxStacks(SceneMaker& maker, int count, std::vector<Pair>& pairs) {
     const Quat rotationA = maker.coin() ? Quat::Identity() : maker.yaw();
     const Quat rotationB = i % 3 == 0 ? rotationA : maker.yaw();
     const double height = halfA.y() + halfB.y() + maker.gap(i, std::min(halfA.y(), halfB.y()) * 0.1, reach);
-    const Vec3 offset = rotationA * Vec3(maker.uniform(-0.3, 0.3) * halfA.x(), height, maker.uniform(-0.3, 0.3) * halfA.z());
+    const Vec3 offset = rotationA * Vec3{maker.uniform(-0.3, 0.3) * halfA.x(), height, maker.uniform(-0.3, 0.3) * halfA.z()};
     pairs.push_back(ordered(maker, {"box stack", box(halfA), box(halfB), {Vec3::Zero(), rotationA},
                                     {offset, rotationB}, reach}));
   }
@@ -157,7 +159,7 @@ void addFloorStacks(SceneMaker& maker, int count, std::vector<Pair>& pairs) {
     const Vec3 half = maker.halfExtents(0.1, 1.0);
     const double reach = maker.uniform(0.02, 0.1);
     const double height = floorHalf.y() + half.y() + maker.gap(i, half.y() * 0.1, reach);
-    const Vec3 position(maker.uniform(-40, 40), height, maker.uniform(-40, 40));
+    const Vec3 position{maker.uniform(-40, 40), height, maker.uniform(-40, 40)};
     pairs.push_back(ordered(maker, {"box on floor", box(floorHalf), box(half), {Vec3::Zero(), Quat::Identity()},
                                     {position, maker.yaw()}, reach}));
   }
@@ -174,7 +176,7 @@ void addEdgeEdges(SceneMaker& maker, int count, std::vector<Pair>& pairs) {
                            Quat(Eigen::AngleAxisd(quarter, Vec3::UnitZ()));
     const double top = (halfA.y() + halfA.z()) / std::sqrt(2.0), bottom = (halfB.x() + halfB.y()) / std::sqrt(2.0);
     const double gap = i % 5 == 2 ? -0.01 : maker.gap(i, 0.05, reach);
-    const Vec3 offset(maker.uniform(-0.5, 0.5) * halfA.x(), top + bottom + gap, maker.uniform(-0.5, 0.5) * halfB.z());
+    const Vec3 offset{maker.uniform(-0.5, 0.5) * halfA.x(), top + bottom + gap, maker.uniform(-0.5, 0.5) * halfB.z()};
     pairs.push_back(ordered(maker, {"box edge-edge", box(halfA), box(halfB), {Vec3::Zero(), rotationA},
                                     {offset, rotationB}, reach}));
   }
@@ -185,7 +187,7 @@ void addDifferentSizes(SceneMaker& maker, int count, std::vector<Pair>& pairs) {
     const Vec3 bigHalf = maker.halfExtents(10.0, 20.0);
     const double reach = maker.uniform(0.02, 0.1);
     const Quat rotation = maker.rotation();
-    const Vec3 onTop(maker.uniform(-0.9, 0.9) * bigHalf.x(), bigHalf.y(), maker.uniform(-0.9, 0.9) * bigHalf.z());
+    const Vec3 onTop{maker.uniform(-0.9, 0.9) * bigHalf.x(), bigHalf.y(), maker.uniform(-0.9, 0.9) * bigHalf.z()};
     if (i % 2 == 0) {
       const double radius = maker.uniform(0.01, 0.05);
       const Vec3 local = onTop + Vec3(0, radius + maker.gap(i / 2, radius, reach), 0);
