@@ -3,12 +3,14 @@
 // at least name, n, ours_ms, peer, peer_ms and ratio (ours / peer): absolute
 // times on shared machines are noise, the ratio measured in one run is not.
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "engine/collision_offload.h"
 #include "engine/solver/solver_settings.h"
 
 namespace physdbg::bench {
@@ -21,6 +23,11 @@ struct BenchOptions {
   // physdbg's threads in the scene benchmarks (`physdbg bench --threads`, 0
   // every core). Without it they run twice: one thread and every core.
   std::optional<int> threads;
+  // The GL context of the gpu benchmark: "osmesa" (llvmpipe) or "egl" (a GPU).
+  std::string backend = "osmesa";
+  // `physdbg bench --collision gpu`: physdbg's side of the scene benchmarks
+  // collides in compute shaders, each world on a stage this makes.
+  std::function<std::shared_ptr<CollisionOffload>()> makeGpuCollision;
 };
 
 

@@ -7,6 +7,7 @@ namespace physdbg::bench {
 Benchmark narrowBenchmark();
 #ifdef PHYSDBG_HAVE_RENDER
 Benchmark renderBenchmark();
+Benchmark gpuBenchmark();
 #endif
 Benchmark dropBenchmark();
 Benchmark pyramidBenchmark();
@@ -23,6 +24,9 @@ std::vector<Benchmark> allBenchmarks() {
 #endif
   benchmarks.push_back(dropBenchmark());
   benchmarks.push_back(pyramidBenchmark());
+#ifdef PHYSDBG_HAVE_RENDER
+  benchmarks.push_back(gpuBenchmark());
+#endif
   return benchmarks;
 }
 

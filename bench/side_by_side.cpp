@@ -23,7 +23,12 @@ double millisecondsPerStep(int steps, Step&& step) {
 EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options, int threads) {
   if (options.solver) scene.world.solver.kind = *options.solver;
   scene.world.threads = threads;
-  World world = buildWorld(scene);
+  std::shared_ptr<CollisionOffload> offload;
+  if (options.makeGpuCollision) {
+    scene.world.collisionDevice = CollisionDevice::Gpu;
+    offload = options.makeGpuCollision();
+  }
+  World world = buildWorld(scene, offload);
   EngineRun run;
   for (const RigidBody& body : world.bodies()) run.startPositions.push_back(body.position());
   run.msPerStep = millisecondsPerStep(steps, [&] { world.step(); });

@@ -7,6 +7,7 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/common_options.h"
+#include "gpu/gpu_collision.h"
 
 namespace physdbg::cli {
 namespace {
@@ -35,7 +36,7 @@ int runBench(const std::vector<std::string>& args) {
   std::string names;
   for (const auto& benchmark : bench::allBenchmarks()) names += "\n  " + benchmark.name + ": " + benchmark.description;
   const CommandSpec spec{"bench",
-                         "[NAME] [--json] [--quick] [--solver seed|sequential_impulse] [--threads N]",
+                         "[NAME] [--json] [--quick] [--solver seed|sequential_impulse] [--threads N] [--collision cpu|gpu] [--backend B]",
                          "Runs the benchmark NAME, or all of them, each side by side with its peer engine in the same "
                          "run.\nratio = ours / peer: below 1 means physdbg is faster. Benchmarks:" + names,
                          {{"--json", "", "", "print one JSON object per line instead of a table"},
@@ -44,7 +45,12 @@ int runBench(const std::vector<std::string>& args) {
                            "physdbg's contact solver in the scene benchmarks (drop, pyramid; seed runs only it)"},
                           {"--threads", "", "N",
                            "physdbg's threads in the scene benchmarks (drop, pyramid): N alone (0 every core); by "
-                           "default one row on 1 thread and one on every core, each with its ratio to Bullet"}},
+                           "default one row on 1 thread and one on every core, each with its ratio to Bullet"},
+                          {"--collision", "", "cpu|gpu",
+                           "where physdbg's collision detection runs in the scene benchmarks (drop, pyramid): cpu "
+                           "(default) or compute shaders on the --backend context"},
+                          {"--backend", "", "osmesa|egl",
+                           "GL context of the gpu benchmark: OSMesa's llvmpipe (default) or EGL, which reaches a GPU"}},
                          0,
                          1};
   const auto parsed = Arguments::parse(spec, args);
@@ -63,14 +69,22 @@ int runBench(const std::vector<std::string>& args) {
   options.quick = parsed->has("--quick");
   options.solver = readSolverKind(*parsed);
   options.threads = readThreads(*parsed);
+  options.backend = parsed->has("--backend") ? parsed->value("--backend") : "osmesa";
+  const render::Backend backend = render::parseBackend(options.backend);  // a bad name fails before any run
+  if (readCollisionDevice(*parsed) == CollisionDevice::Gpu)
+    options.makeGpuCollision = [backend] { return std::make_shared<gpu::GpuCollision>(backend); };
   for (const auto& benchmark : selected) {
-    benchmark.run(options, [&](const nlohmann::json& record) {
-      if (json) {
-        std::cout << record.dump() << std::endl;
-      } else {
-        printRow(record);
-      }
-    });
+    try {
+      benchmark.run(options, [&](const nlohmann::json& record) {
+        if (json) {
+          std::cout << record.dump() << std::endl;
+        } else {
+          printRow(record);
+        }
+      });
+    } catch (const gpu::ComputeUnavailable& error) {
+      throw UsageError("bench " + benchmark.name + ": " + error.what());
+    }
   }
   return 0;
 }

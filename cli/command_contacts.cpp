@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/arguments.h"
+#include "cli/collision_device.h"
 #include "cli/commands.h"
 #include "cli/common_options.h"
 #include "cli/overlapping_pairs.h"
@@ -14,6 +15,33 @@ namespace physdbg::cli {
 namespace {
 
 nlohmann::json vectorJson(const Vec3& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
+
+}  // namespace
+
+namespace {
+
+// The narrow phase on each pair: the offload's device for the shapes it
+// handles (one batch), the CPU for the rest.
+std::vector<ContactResult> testPairs(const World& world, const std::vector<BodyPair>& pairs,
+                                     const NarrowPhaseOptions& options, CollisionOffload* offload) {
+  std::vector<ContactResult> results(pairs.size());
+  std::vector<OffloadRequest> requests;
+  std::vector<std::size_t> offloaded;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const RigidBody &a = world.body(pairs[i].a), &b = world.body(pairs[i].b);
+    if (offload != nullptr && offload->handles(a.collider().kind(), b.collider().kind())) {
+      requests.push_back({pairs[i].a, pairs[i].b, 0.0});
+      offloaded.push_back(i);
+      continue;
+    }
+    results[i] = collide(a.collider(), a.transform(), b.collider(), b.transform(), options);
+  }
+  if (requests.empty()) return results;
+  std::vector<OffloadedContact> answers;
+  offload->collide(world.bodies(), requests, answers);
+  for (std::size_t k = 0; k < offloaded.size(); ++k) results[offloaded[k]] = answers[k].result;
+  return results;
+}
 
 }  // namespace
 
@@ -28,19 +56,21 @@ int runContacts(const std::vector<std::string>& args) {
                          {{"--json", "", "", "print a JSON array of {a, b, status, normal, depth, point_a, point_b}"}},
                          1,
                          1};
-  addOptions(spec, {OptionGroup::Threads});
+  addOptions(spec, {OptionGroup::Threads, OptionGroup::Collision, OptionGroup::Backend});
   const auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const SceneDescription scene = readScene(*parsed);
-  const World world = buildWorld(scene);
+  const std::shared_ptr<CollisionOffload> offload = collisionOffloadFor(scene, readBackend(*parsed));
+  const World world = buildWorld(scene, offload);
   std::vector<Aabb> boxes;
   boxes.reserve(world.bodyCount());
   for (const RigidBody& body : world.bodies()) boxes.push_back(body.collider().worldBounds(body.transform()));
+  const std::vector<BodyPair> pairs = overlappingPairs(boxes);
+  const std::vector<ContactResult> results = testPairs(world, pairs, scene.world.narrowPhase, offload.get());
   nlohmann::json contacts = nlohmann::json::array();
-  for (const BodyPair& pair : overlappingPairs(boxes)) {
-    const RigidBody &bodyA = world.body(pair.a), &bodyB = world.body(pair.b);
-    const ContactResult result =
-        collide(bodyA.collider(), bodyA.transform(), bodyB.collider(), bodyB.transform(), scene.world.narrowPhase);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const BodyPair& pair = pairs[i];
+    const ContactResult& result = results[i];
     if (result.status == ContactStatus::Separated) continue;
     contacts.push_back({{"a", pair.a},
                         {"b", pair.b},

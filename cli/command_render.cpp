@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "cli/arguments.h"
+#include "cli/collision_device.h"
 #include "cli/commands.h"
 #include "cli/common_options.h"
 #include "cli/numerical_faults.h"
@@ -108,7 +109,8 @@ int runRender(const std::vector<std::string>& args) {
       1,
       1};
   addOptions(spec, {OptionGroup::SceneFrames, OptionGroup::ImageSize, OptionGroup::SceneLayers, OptionGroup::Focus,
-                    OptionGroup::Camera, OptionGroup::Backend, OptionGroup::Solver, OptionGroup::Threads});
+                    OptionGroup::Camera, OptionGroup::Backend, OptionGroup::Solver, OptionGroup::Threads,
+                    OptionGroup::Collision});
   auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const SceneDescription scene = readScene(*parsed);
@@ -119,7 +121,9 @@ int runRender(const std::vector<std::string>& args) {
   prepareOutputDirectory(outputDirectory);
   removeEarlierFrames(outputDirectory, options.frames);
 
-  viewer::SceneFrames frames = asUsageError([&] { return viewer::SceneFrames(scene, options); });
+  std::shared_ptr<CollisionOffload> collision = collisionOffloadFor(scene, readBackend(*parsed));
+  viewer::SceneFrames frames = asUsageError(
+      [&] { return viewer::SceneFrames(scene, options, viewer::FramePurpose::Show, std::move(collision)); });
   render::Renderer renderer({options.width, options.height, options.samples, readBackend(*parsed)});
   ProgressBar progress("render " + scene.name, options.frames.count());
   viewer::FramePipelineOptions pipeline;

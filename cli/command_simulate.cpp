@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/arguments.h"
+#include "cli/collision_device.h"
 #include "cli/limits.h"
 #include "cli/commands.h"
 #include "cli/common_options.h"
@@ -13,6 +14,7 @@
 #include "cli/output_folder.h"
 #include "cli/state_hash.h"
 #include "cli/step_series.h"
+#include "gpu/gpu_collision.h"
 #include "scenes/scene.h"
 
 namespace physdbg::cli {
@@ -86,12 +88,14 @@ int runSimulate(const std::vector<std::string>& args) {
        {"--events", "", "", "print contact events: 'step N begin|stay|end A B'"}},
       1,
       1};
-  addOptions(spec, {OptionGroup::RunSteps, OptionGroup::Solver, OptionGroup::Threads});
+  addOptions(spec, {OptionGroup::RunSteps, OptionGroup::Solver, OptionGroup::Threads, OptionGroup::Collision,
+                    OptionGroup::Backend});
   const auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const SceneDescription scene = readScene(*parsed);
   const int steps = readSteps(*parsed, scene.steps);
-  World world = buildWorld(scene);
+  const std::shared_ptr<CollisionOffload> offload = collisionOffloadFor(scene, readBackend(*parsed));
+  World world = buildWorld(scene, offload);
   EventPrinter events(world);
   if (parsed->has("--events")) world.setContactListener(&events);
   std::optional<TraceWriter> trace;
@@ -137,6 +141,14 @@ int runSimulate(const std::vector<std::string>& args) {
               stats.narrowPhase.gjk, stats.narrowPhase.epa);
   if (stats.substeps > 0)
     std::printf("solver: %d substeps, contacts at %.4g Hz\n", stats.substeps, stats.contactHertz);
+  if (const auto* gpu = dynamic_cast<const gpu::GpuCollision*>(offload.get())) {
+    const gpu::GpuCollisionTimings timings = gpu->timings();
+    std::printf("collision on the gpu (%s): %lld pairs tested there in %lld dispatches; upload %.4f, dispatch %.4f, "
+                "readback %.4f ms per step\n",
+                gpu->identity().renderer.c_str(), timings.pairsTested, timings.dispatches,
+                1e3 * timings.uploadSeconds / steps, 1e3 * timings.dispatchSeconds / steps,
+                1e3 * timings.readbackSeconds / steps);
+  }
   if (parsed->has("--hash")) std::printf("state hash %s\n", hexHash(worldStateHash(world)).c_str());
   return reportNumericalFaults("simulate", world);
 }

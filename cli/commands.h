@@ -25,5 +25,6 @@ int runReport(const std::vector<std::string>& args);
 int runDiff(const std::vector<std::string>& args);
 int runPlot(const std::vector<std::string>& args);
 int runGolden(const std::vector<std::string>& args);
+int runGpuInfo(const std::vector<std::string>& args);
 
 }  // namespace physdbg::cli

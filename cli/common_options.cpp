@@ -93,6 +93,10 @@ std::vector<OptionSpec> optionRows(OptionGroup group) {
       return {{"--threads", "", "N",
                "threads each step may use, overriding the scene's: 0 one per core (the default), 1 none spawned; "
                "results are bit-identical for every N"}};
+    case OptionGroup::Collision:
+      return {{"--collision", "", "cpu|gpu",
+               "where collision detection runs, overriding the scene's: cpu (the default), or compute shaders "
+               "(GL 4.3) in a --backend context for the broad phase and sphere, box and capsule pairs"}};
   }
   return {};
 }
@@ -117,10 +121,20 @@ std::optional<int> readThreads(const Arguments& arguments) {
   return parseIndex(arguments.value("--threads"), "--threads", arguments.value("--threads"), scene_limits::maxThreads);
 }
 
+std::optional<CollisionDevice> readCollisionDevice(const Arguments& arguments) {
+  if (!arguments.has("--collision")) return std::nullopt;
+  const std::string name = arguments.value("--collision");
+  for (const CollisionDevice device : {CollisionDevice::Cpu, CollisionDevice::Gpu})
+    if (name == collisionDeviceName(device)) return device;
+  throw UsageError("--collision: expected cpu or gpu, got '" + name + "'");
+}
+
 SceneDescription readScene(const Arguments& arguments) {
   SceneDescription scene = resolveScene(arguments.positional()[0]);
   if (const std::optional<SolverKind> kind = readSolverKind(arguments)) scene.world.solver.kind = *kind;
   if (const std::optional<int> threads = readThreads(arguments)) scene.world.threads = *threads;
+  if (const std::optional<CollisionDevice> device = readCollisionDevice(arguments))
+    scene.world.collisionDevice = *device;
   return scene;
 }
 

@@ -39,6 +39,7 @@ enum class OptionGroup {
   TreeSteps,       // --steps after the insertions (default none)
   Solver,          // --solver seed|sequential_impulse (default the scene's)
   Threads,         // --threads N (default the scene's, else every core)
+  Collision,       // --collision cpu|gpu (default the scene's, else cpu)
 };
 
 // The --size defaults: a frame, and each of the tree's two panels.
@@ -76,8 +77,10 @@ CameraOptions readCameraOptions(const Arguments& arguments);
 std::optional<SolverKind> readSolverKind(const Arguments& arguments, const std::string& option = "--solver");
 // --threads N (0..scene_limits::maxThreads; 0 one per core), when given.
 std::optional<int> readThreads(const Arguments& arguments);
+// --collision cpu|gpu, when given.
+std::optional<CollisionDevice> readCollisionDevice(const Arguments& arguments);
 // The scene named by the first positional argument (a built-in name or a
-// file), with --solver and --threads, when given, overriding the scene's.
+// file), with --solver, --threads and --collision, when given, overriding the scene's.
 SceneDescription readScene(const Arguments& arguments);
 // --highlight A,B,...: distinct body indices, at most limits::maxHighlighted.
 std::vector<int> readHighlight(const Arguments& arguments);

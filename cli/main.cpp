@@ -33,6 +33,8 @@ const std::vector<Subcommand>& subcommands() {
       {"plot", "line plot of CSV columns (simulate --series) into a PNG", physdbg::cli::runPlot},
       {"golden", "approve and check golden images of your own scenes (manifest, HTML report, JUnit)",
        physdbg::cli::runGolden},
+      {"gpu-info", "the GL context's renderer, version and compute limits (for --collision gpu)",
+       physdbg::cli::runGpuInfo},
   };
   return commands;
 }

@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/collision_offload.h"
 #include "engine/colliders/collider.h"
 #include "engine/contacts/contact.h"
 #include "engine/contacts/contact_manifold.h"
@@ -37,15 +38,9 @@
 
 namespace physdbg::gpu {
 
-struct NarrowPhaseRequest {
-  std::uint32_t a = 0, b = 0;  // body ids, a < b
-  double reach = 0;            // speculative distance (m), as the CPU solver's contactReach gives
-};
-
-struct GpuContact {
-  ContactResult result;
-  ContactManifold manifold;  // a, b, normal, pointCount and points; impulses zero
-};
+// The world's own request and answer (engine/collision_offload.h).
+using NarrowPhaseRequest = OffloadRequest;
+using GpuContact = OffloadedContact;
 
 struct GpuNarrowPhaseTimings {
   double uploadSeconds = 0, dispatchSeconds = 0, readbackSeconds = 0;
