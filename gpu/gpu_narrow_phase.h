@@ -24,8 +24,8 @@
 //    capsule's core (the CPU asks EPA) are flagged by the shader and answered
 //    by the CPU path here, so their results are the CPU's own;
 //    lastTimings().cpuFallbacks counts them. Sphere-capsule pairs are
-//    answered in closed form, where the CPU runs GJK: they agree to GJK's
-//    tolerance, not to round-off.
+//    answered in closed form where the CPU runs GJK (which ends exactly on a
+//    point against a segment: they agree to round-off in the tests).
 //  - What may still differ: a decision the CPU takes on an exact tie in
 //    exact arithmetic, settled by the last bit of round-off (a point exactly
 //    on a clip plane plus its tolerance, two reduction candidates exactly
