@@ -1,6 +1,8 @@
 #include "gpu/gpu_narrow_phase.h"
 
+#include <bit>
 #include <chrono>
+#include <cstddef>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -8,6 +10,7 @@
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/sphere_collider.h"
+#include "engine/contacts/manifold_points.h"
 #include "engine/narrowphase/analytic_contacts.h"
 #include "engine/narrowphase/narrow_phase.h"
 #include "engine/narrowphase/narrow_phase_options.h"
@@ -16,46 +19,51 @@
 
 namespace physdbg::gpu {
 
+// std430 with double vectors: a dvec4 is 32 bytes and aligned to 32, a
+// uvec4 16; every member below is one of them, placed so no padding arises.
 struct GpuPose {
-  float high[4], low[4], rotation[4];  // position as high part and remainder; unit quaternion xyzw
+  double position[4];  // w unused
+  double rotation[4];  // unit quaternion xyzw
 };
+static_assert(sizeof(GpuPose) == 64 && offsetof(GpuPose, rotation) == 32);
 
 struct GpuShape {
-  float parameters[4];  // w: ColliderKind
+  double parameters[4];  // w: ColliderKind
   bool operator==(const GpuShape&) const = default;
 };
+static_assert(sizeof(GpuShape) == 32);
 
 struct GpuNarrowPhase::GpuResult {
-  float normal[4];  // w: signed distance
-  float pointA[4], pointB[4];
-  float manifoldNormal[4];  // w: point count
+  double normal[4];  // w: signed distance
+  double pointA[4], pointB[4];
+  double manifoldNormal[4];  // w: point count
+  double manifoldA[4][4];    // w: separation
+  double manifoldB[4][4];
   std::uint32_t flags[4];
-  float manifoldA[4][4];  // w: separation
-  float manifoldB[4][4];
   std::uint32_t featureIds[4];
 };
 
 namespace {
 
 constexpr unsigned kWorkGroupSize = 64;  // local_size_x in the shader
-constexpr std::uint32_t kFlagBoxBox = 1, kFlagNeedsCpu = 2;
+constexpr std::uint32_t kFlagBoxBox = 1, kFlagNeedsCpu = 2, kFlagPointsFromB = 4;
 
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 GpuShape shapeOf(const Collider& collider) {
-  GpuShape shape{{0, 0, 0, static_cast<float>(static_cast<int>(collider.kind()))}};
+  GpuShape shape{{0, 0, 0, static_cast<double>(static_cast<int>(collider.kind()))}};
   switch (collider.kind()) {
-    case ColliderKind::Sphere: shape.parameters[0] = static_cast<float>(static_cast<const SphereCollider&>(collider).radius()); break;
+    case ColliderKind::Sphere: shape.parameters[0] = static_cast<const SphereCollider&>(collider).radius(); break;
     case ColliderKind::Box: {
       const Vec3& half = static_cast<const BoxCollider&>(collider).halfExtents();
-      for (int i = 0; i < 3; ++i) shape.parameters[i] = static_cast<float>(half[i]);
+      for (int i = 0; i < 3; ++i) shape.parameters[i] = half[i];
       break;
     }
     case ColliderKind::Capsule: {
       const auto& capsule = static_cast<const CapsuleCollider&>(collider);
-      shape.parameters[0] = static_cast<float>(capsule.radius());
-      shape.parameters[1] = static_cast<float>(capsule.halfHeight());
+      shape.parameters[0] = capsule.radius();
+      shape.parameters[1] = capsule.halfHeight();
       break;
     }
     default: break;  // not supported: never requested
@@ -63,26 +71,11 @@ GpuShape shapeOf(const Collider& collider) {
   return shape;
 }
 
-// A double as a high part with float's 24 bits and the remainder: their
-// sum carries about 48 bits. The high part comes from Veltkamp's split, not
-// from double(float(value)): GCC 12.2 at -O3 vectorizes that round trip
-// into nothing (the remainder came out zero for two of three coordinates).
-void splitDouble(double value, float& high, float& low) {
-  constexpr double splitter = 536870913.0;  // 2^29 + 1: keeps 53 - 29 = 24 bits
-  const double scaled = value * splitter;
-  const double rounded = scaled - (scaled - value);
-  high = static_cast<float>(rounded);  // exact
-  low = static_cast<float>(value - rounded);
-}
-
+// The rotation normalised as collide() normalises it, so both start from the same quaternion.
 GpuPose poseOf(const Transform& transform) {
-  GpuPose pose{};
   const Quat rotation = transform.rotation.normalized();
-  for (int i = 0; i < 3; ++i) splitDouble(transform.position[i], pose.high[i], pose.low[i]);
-  const float quaternion[4] = {static_cast<float>(rotation.x()), static_cast<float>(rotation.y()),
-                               static_cast<float>(rotation.z()), static_cast<float>(rotation.w())};
-  std::memcpy(pose.rotation, quaternion, sizeof quaternion);
-  return pose;
+  return {{transform.position.x(), transform.position.y(), transform.position.z(), 0.0},
+          {rotation.x(), rotation.y(), rotation.z(), rotation.w()}};
 }
 
 bool sameTransform(const Transform& a, const Transform& b) {
@@ -107,7 +100,7 @@ int uploadChanged(StorageBuffer& buffer, const std::vector<Record>& records, con
   return uploaded;
 }
 
-Vec3 toVec3(const float* values) { return {values[0], values[1], values[2]}; }
+Vec3 toVec3(const double* values) { return {values[0], values[1], values[2]}; }
 
 }  // namespace
 
@@ -184,13 +177,14 @@ void GpuNarrowPhase::uploadRequests(const std::vector<RigidBody>& bodies,
       throw std::invalid_argument("GpuNarrowPhase: request " + std::to_string(i) + " needs body ids a < b < body count");
     if (!supports(bodies[request.a].collider().kind(), bodies[request.b].collider().kind()))
       throw std::invalid_argument("GpuNarrowPhase: request " + std::to_string(i) + " pairs shapes the GPU does not collide");
-    const float reach = static_cast<float>(requests[i].reach);
-    std::uint32_t reachBits;
-    std::memcpy(&reachBits, &reach, sizeof reachBits);
+    const double reach = requests[i].reach;
+    std::uint32_t reachWords[2];  // low word first, as the shader's packDouble2x32 takes them
+    std::memcpy(reachWords, &reach, sizeof reachWords);
+    static_assert(std::endian::native == std::endian::little);
     requestStaging_[4 * i] = requests[i].a;
     requestStaging_[4 * i + 1] = requests[i].b;
-    requestStaging_[4 * i + 2] = reachBits;
-    requestStaging_[4 * i + 3] = 0;
+    requestStaging_[4 * i + 2] = reachWords[0];
+    requestStaging_[4 * i + 3] = reachWords[1];
   }
   requests_.reserve(requestStaging_.size() * sizeof(std::uint32_t));
   requests_.upload(0, requestStaging_.data(), requestStaging_.size() * sizeof(std::uint32_t));
@@ -233,19 +227,31 @@ void GpuNarrowPhase::convert(const std::vector<RigidBody>& bodies, const std::ve
   }
 }
 
-// Points come relative to A's position: A's double position goes back on here.
+// Points come relative to A's position (manifold points of a face of B:
+// to B's); that double position goes back on here, as the CPU adds it.
 void GpuNarrowPhase::fromShader(const GpuResult& gpu, const Transform& ta, const Transform& tb, GpuContact& contact) {
+  static_assert(offsetof(GpuResult, manifoldNormal) == 96 && offsetof(GpuResult, manifoldA) == 128 &&
+                offsetof(GpuResult, manifoldB) == 256 && offsetof(GpuResult, flags) == 384 &&
+                offsetof(GpuResult, featureIds) == 400 && sizeof(GpuResult) == 416);  // the shader's std430 layout
   const Vec3& origin = ta.position;
-  contact.result = classifyContact(gpu.normal[3], toVec3(gpu.normal).normalized(), origin + toVec3(gpu.pointA),
+  contact.result = classifyContact(gpu.normal[3], toVec3(gpu.normal), origin + toVec3(gpu.pointA),
                                    origin + toVec3(gpu.pointB), NarrowPhaseOptions{}.touchingTolerance);
   contact.result.usedBoxBox = (gpu.flags[0] & kFlagBoxBox) != 0;
   ContactManifold& manifold = contact.manifold;
-  manifold.normal = toVec3(gpu.manifoldNormal).normalized();
+  manifold.normal = toVec3(gpu.manifoldNormal);
   manifold.pointCount = static_cast<int>(gpu.manifoldNormal[3]);
+  if (gpu.featureIds[0] == 0) {  // the narrow phase's own point, as singlePoint() makes it
+    manifold.normal = contact.result.normal;
+    manifold.pointCount = 0;
+    addPoint(manifold, ta, tb, contact.result.pointA, contact.result.pointB, 0);
+    return;
+  }
+  const Vec3& manifoldOrigin = (gpu.flags[0] & kFlagPointsFromB) != 0 ? tb.position : origin;
   for (int k = 0; k < manifold.pointCount; ++k) {
     ManifoldPoint& point = manifold.points[k];
-    point.pointA = origin + toVec3(gpu.manifoldA[k]);
-    point.pointB = origin + toVec3(gpu.manifoldB[k]);
+    point = ManifoldPoint{};
+    point.pointA = manifoldOrigin + toVec3(gpu.manifoldA[k]);
+    point.pointB = manifoldOrigin + toVec3(gpu.manifoldB[k]);
     point.localA = ta.applyInverse(point.pointA);
     point.localB = tb.applyInverse(point.pointB);
     point.separation = gpu.manifoldA[k][3];

@@ -2,27 +2,37 @@
 // The narrow phase of the pairs the GPU can answer, for many pairs at once:
 // one dispatch and one readback per step instead of one CPU call per pair.
 // It answers as collide() with default options and buildManifold() would
-// (gpu_narrow_phase_test.cpp measures how closely), in float:
-//  - Positions go up as two floats each (high part and remainder) and the
-//    shader subtracts them pairwise, so a pair 1e4 m from the origin keeps
-//    float's relative precision of its own size; points come back relative
-//    to A's position and A's double position is added here.
-//  - Float round-off is far above the CPU's double tie margins, so the
-//    shader's are wider (narrow_phase_shader.cpp names each): exact ties
-//    (stacks, equal boxes) resolve as on the CPU, but two axes or reference
-//    faces within about 1e-6 of the pair's size of each other, or a point
-//    within float round-off of a side plane or the reach, may be decided the
-//    other way. A point's feature id then differs with it.
+// (gpu_narrow_phase_test.cpp measures how closely), in double precision:
+//  - Why double: in float the shader could not follow the CPU's decisions on
+//    resting piles. Boxes tilted 1e-5..1e-4 rad against each other have
+//    nearly parallel edges whose cross products the CPU still tries as axes
+//    (down to a sine of 1e-8), and axes, reference faces and reduction
+//    candidates that tie to within 1e-10..1e-9 of the pair's size, which the
+//    CPU settles by margins float round-off (1e-7) swamps: normals came out
+//    1e-3 apart, manifold points on other corners, feature ids differed.
+//    The shader now uses the CPU's own constants (narrow_phase_shader.cpp)
+//    and its order of operations where that decides.
+//  - What it costs: consumer GPUs run fp64 at 1/16..1/64 of their float rate
+//    (data-centre parts at 1/2), and every record is twice the size. The
+//    narrow phase is a small part of a step, and llvmpipe (the CPU) runs
+//    doubles at nearly float speed.
+//  - Positions and unit quaternions go up as doubles, results come back as
+//    doubles. Points come back relative to A's position (a manifold on B's
+//    face: to B's) and that position is added here, as the CPU adds it.
 //  - Box pairs the separating-axis test cannot settle (separated, closest
 //    features no axis names: the CPU asks GJK) and a sphere centre on a
 //    capsule's core (the CPU asks EPA) are flagged by the shader and answered
 //    by the CPU path here, so their results are the CPU's own;
-//    lastTimings().cpuFallbacks counts them.
-//  - A clipped polygon holds 8 points (the CPU's 16 leave room for
-//    round-off bending a nearly edge-on face; a quad clipped by a rectangle
-//    has at most 8), so such a pair may keep other points than the CPU.
-//  - Touching and Penetrating may disagree with the CPU where the signed
-//    distance is within float round-off of the touching tolerance.
+//    lastTimings().cpuFallbacks counts them. Sphere-capsule pairs are
+//    answered in closed form where the CPU runs GJK (which ends exactly on a
+//    point against a segment: they agree to round-off in the tests).
+//  - What may still differ: a decision the CPU takes on an exact tie in
+//    exact arithmetic, settled by the last bit of round-off (a point exactly
+//    on a clip plane plus its tolerance, two reduction candidates exactly
+//    one margin apart), where the GPU's operation order or fused
+//    multiply-adds differ from the compiled C++ (dot products, matrix
+//    products and points made relative to A's position rather than absolute
+//    round differently in the last bit).
 #include <cstdint>
 #include <vector>
 

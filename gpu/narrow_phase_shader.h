@@ -4,7 +4,8 @@
 namespace physdbg::gpu {
 
 // Storage bindings and record layouts the source expects; GpuNarrowPhase
-// fills them (std430, every member a vec4 or uvec4 so no padding differs).
+// fills them (std430, every member a dvec4 or uvec4, placed so no padding
+// arises; gpu_narrow_phase.cpp asserts the offsets).
 enum NarrowPhaseBinding : unsigned { kPoseBinding = 0, kShapeBinding = 1, kRequestBinding = 2, kResultBinding = 3 };
 
 const char* narrowPhaseShaderSource();
