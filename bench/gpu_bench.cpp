@@ -76,8 +76,8 @@ void runCase(int count, DropShape shape, int steps, const BenchOptions& options,
   record["pairs_on_gpu_per_step"] = static_cast<double>(gpu.timings.pairsTested) / steps;
   record["cpu_left_container"] = cpu.leftContainer;
   record["gpu_left_container"] = gpu.leftContainer;
-  // Float contacts part from double ones within steps in a pile: this says
-  // how far, not that either is wrong (the tests compare contacts directly).
+  // Contacts agree to round-off (tests/gpu/), but a pile is chaotic: the last
+  // bits grow over the run. This says how far, not that either is wrong.
   record["largest_final_position_difference_m"] = largestDifference(cpu, gpu);
   if (gpu.renderer.find("llvmpipe") != std::string::npos)
     record["note"] = "llvmpipe runs the shaders on this CPU: correctness and overhead, not GPU speed";

@@ -63,6 +63,15 @@ TEST(GpuCli, SimulateOnTheGpuReportsTheDeviceAndKeepsTheStackStanding) {
   EXPECT_EQ(run.output.find(" 0 pairs tested there"), std::string::npos) << run.output;
 }
 
+TEST(GpuCli, OnTheGpuTheHashIsTheSameForAnyThreadCount) {
+  const std::string run = "simulate pyramid --steps 60 --collision gpu --hash --threads ";
+  const Result one = runPhysdbg(run + "1"), four = runPhysdbg(run + "4");
+  ASSERT_EQ(one.exitCode, 0) << one.output;
+  const std::size_t at = one.output.find("state hash ");
+  ASSERT_NE(at, std::string::npos) << one.output;
+  EXPECT_NE(four.output.find(one.output.substr(at, 27)), std::string::npos) << four.output;
+}
+
 TEST(GpuCli, TheSceneKeyChoosesTheGpuAndARecordCommandRefusesIt) {
   ScratchFolder folder;
   const std::string path = folder / "gpu.json";

@@ -1,7 +1,8 @@
 // 100 random scenes of spheres and boxes, stepped once with collision on the
 // CPU and on the GPU from the same state: the candidate pairs must be equal
-// and every manifold the solver received must agree within float tolerance
-// (normal 1e-5, points 1e-4 and separations 1e-5 of the larger body's size).
+// and every manifold the solver received must agree to round-off (normal
+// 1e-12, points and separations 1e-10 of the larger body's size; the issue
+// asked for float's 1e-5).
 // Scenes mix touching, deep and resting bodies, random rotations and boxes
 // aligned on a floor; a quarter sit about 1e4 m from the origin.
 #include <gtest/gtest.h>
@@ -21,7 +22,10 @@ namespace physdbg::gpu {
 namespace {
 
 constexpr int sceneCount = 100;
-constexpr double normalTolerance = 1e-5, pointTolerance = 1e-4, separationTolerance = 1e-5;
+// The shader computes in double as the CPU does (gpu_narrow_phase.h): what
+// is left is operation order, about 1e-15 here; a driver fusing multiply-adds
+// may add a few digits.
+constexpr double normalTolerance = 1e-12, pointTolerance = 1e-10, separationTolerance = 1e-10;
 
 class RandomScene {
  public:
