@@ -78,6 +78,15 @@ ComputeContext::~ComputeContext() = default;
 
 void ComputeContext::makeCurrent() { context_->makeCurrent(); }
 
+bool ComputeContext::tryMakeCurrent() noexcept {
+  try {
+    context_->makeCurrent();
+    return true;
+  } catch (...) {
+    return false;
+  }
+}
+
 ComputeIdentity probeContext(render::Backend backend) {
   auto context = openContext(backend);
   return readIdentity(backend);

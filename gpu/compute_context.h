@@ -56,6 +56,9 @@ class ComputeContext {
 
   // Makes the context current on the calling thread.
   void makeCurrent();
+  // For destructors, which must not throw: false when it could not (the GL
+  // objects then go with the context).
+  bool tryMakeCurrent() noexcept;
   const ComputeIdentity& identity() const { return identity_; }
 
  private:

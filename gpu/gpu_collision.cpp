@@ -17,7 +17,7 @@ class OwnedBroadPhase final : public BroadPhase {
                   std::shared_ptr<GpuCollisionTimings> sums)
       : context_(context), inner_(std::make_unique<GpuBroadPhase>(context, options)), sums_(std::move(sums)) {}
   ~OwnedBroadPhase() override {
-    context_.makeCurrent();
+    context_.tryMakeCurrent();
     inner_.reset();
   }
   OwnedBroadPhase(const OwnedBroadPhase&) = delete;
@@ -56,7 +56,7 @@ GpuCollision::GpuCollision(render::Backend backend)
       broadTimings_(std::make_shared<GpuCollisionTimings>()) {}
 
 GpuCollision::~GpuCollision() {
-  context_->makeCurrent();
+  context_->tryMakeCurrent();
   narrowPhase_.reset();
 }
 

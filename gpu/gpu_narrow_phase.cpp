@@ -110,7 +110,7 @@ GpuNarrowPhase::GpuNarrowPhase(ComputeContext& context) : context_(context) {
 }
 
 // The program and buffers are GL names of this context.
-GpuNarrowPhase::~GpuNarrowPhase() { context_.makeCurrent(); }
+GpuNarrowPhase::~GpuNarrowPhase() { context_.tryMakeCurrent(); }
 
 bool GpuNarrowPhase::supports(ColliderKind a, ColliderKind b) {
   const auto sphereWith = [](ColliderKind other) {

@@ -59,17 +59,14 @@ class EglContext final : public GlContext {
   EglContext() : display_(openDisplay()) {
     EGLint major = 0, minor = 0;
     if (!eglInitialize(display_, &major, &minor)) throw std::runtime_error(eglErrorText("cannot initialise the display"));
-    try {
-      createContext();
-    } catch (...) {
-      eglTerminate(display_);
-      throw;
-    }
+    createContext();
   }
+  // No eglTerminate: Mesa hands every context of a platform the same display,
+  // and terminating it would pull it from under the others (the renderer's
+  // and the GPU collision stage's live side by side). It goes with the process.
   ~EglContext() override {
-    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (eglGetCurrentContext() == context_) eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     eglDestroyContext(display_, context_);
-    eglTerminate(display_);
   }
   EglContext(const EglContext&) = delete;
   EglContext& operator=(const EglContext&) = delete;

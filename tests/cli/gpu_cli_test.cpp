@@ -3,6 +3,7 @@
 // refusal of a context below OpenGL 4.3 (Mesa plays one when asked).
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -70,6 +71,19 @@ TEST(GpuCli, OnTheGpuTheHashIsTheSameForAnyThreadCount) {
   const std::size_t at = one.output.find("state hash ");
   ASSERT_NE(at, std::string::npos) << one.output;
   EXPECT_NE(four.output.find(one.output.substr(at, 27)), std::string::npos) << four.output;
+}
+
+// The renderer's context and the collision stage's live side by side, on
+// two threads (the frame pipeline steps ahead on its own), through either
+// backend; with EGL both come from one display, which neither may close.
+TEST(GpuCli, RenderDrawsWhileTheGpuCollidesThroughOsMesaAndEgl) {
+  ScratchFolder folder;
+  for (const std::string backend : {"osmesa", "egl"}) {
+    const Result run = runPhysdbg("render stack --collision gpu --frames 4 --size 160x120 --backend " + backend +
+                                  " -o " + folder / backend);
+    EXPECT_EQ(run.exitCode, 0) << backend << ": " << run.output;
+    EXPECT_TRUE(std::filesystem::exists(folder / (backend + "/frame_00003.png"))) << backend;
+  }
 }
 
 TEST(GpuCli, TheSceneKeyChoosesTheGpuAndARecordCommandRefusesIt) {
