@@ -24,14 +24,18 @@ driver=/usr/lib/x86_64-linux-gnu/dri/swrast_dri.so
 preload=()
 [ -f "$driver" ] && preload=(env LD_PRELOAD="$driver")
 start=$(date +%s)
-# Left out here, run by the release build: long runs of code every shorter
-# test walks too (a 5050-box pyramid twice, 1000-step stacks, 512-body piles
+# Left out here, run by the release build: long runs of code that shorter
+# tests walk too (a 5050-box pyramid twice, 1000-step stacks, 512-body piles
 # on 1, 2 and 4 threads, 100,000-point hulls, every built-in scene twice for
-# the broad-phase variants and the GPU broad phase). Under the sanitizers they cost
-# about a third of this stage and find nothing the short ones would not.
+# the broad-phase variants and the GPU broad phase, thread-count sweeps of
+# wide pyramids; the shorter determinism tests still run the parallel code
+# here). Under the sanitizers they cost about 40% of this stage and find
+# nothing the short ones would not.
 long_runs='NOT_BUILT|TwoRunsOfThePyramidAreBitIdentical|Seeds/MixedPile|ThreadDeterminism\.MixedPile'
 long_runs+='|HundredThousandPoints|StabilityStacking\.(SmallTimeStep|LargePyramid)|PyramidWithABaseOf20StandsFor1000Steps'
 long_runs+='|BroadPhaseVariantsGiveBitIdenticalMotion|GpuWorld\..*BitForBitWithTheGpuBroadPhase'
+long_runs+='|WideContactSolve\.(AnyThreadCountGivesTheSameStates|ScalarSolveIsThreadIndependentToo)'
+long_runs+='|ThreadDeterminism\.WidePyramid|StackPenetrationDoesNotGrowWithSubsteps'
 "${preload[@]}" ctest --test-dir build-asan --output-on-failure -j "$(nproc)" -LE bench -E "$long_runs"
 echo "sanitize: tests under ASan+UBSan took $(( $(date +%s) - start )) s"
 bash scripts/fuzz.sh --build-dir build-asan "${FUZZ_SECONDS:-20}"
