@@ -12,7 +12,10 @@ void addOverlay(const SceneDescription& scene, const World& world, const Overlay
       counters.frame && counters.frames
           ? "frame " + std::to_string(*counters.frame) + " of " + std::to_string(*counters.frames)
           : "step " + std::to_string(world.stepCount());
-  std::snprintf(line, sizeof line, "%s   %s   t = %.3f s", scene.name.c_str(), progress.c_str(), world.time());
+  // A frame whose contacts came from the compute shaders says so: a video
+  // compared with a CPU one must not pass for it.
+  const char* device = world.settings().collisionDevice == CollisionDevice::Gpu ? "   collision on the gpu" : "";
+  std::snprintf(line, sizeof line, "%s   %s   t = %.3f s%s", scene.name.c_str(), progress.c_str(), world.time(), device);
   const float scale = counters.imageWidth >= 800 ? 2.0f : 1.0f;
   out.texts.push_back({6 * scale, 5 * scale, scale, line, {1, 1, 1, 1}});
   const StepStats& stats = world.lastStepStats();
