@@ -1,5 +1,6 @@
 #include "render/gl_objects.h"
 
+#include <initializer_list>
 #include <stdexcept>
 #include <vector>
 
@@ -54,14 +55,10 @@ class ShaderObject {
   GLuint name_;
 };
 
-}  // namespace
-
-GlProgram createProgram(const char* vertexSource, const char* fragmentSource, const std::string& label) {
-  ShaderObject vertex(GL_VERTEX_SHADER, vertexSource, label + " (vertex)");
-  ShaderObject fragment(GL_FRAGMENT_SHADER, fragmentSource, label + " (fragment)");
+// Links the attached shaders; throws with the info log when they do not link.
+GlProgram linkProgram(std::initializer_list<const ShaderObject*> shaders, const std::string& label) {
   GlProgram program(glCreateProgram());
-  glAttachShader(program.get(), vertex.get());
-  glAttachShader(program.get(), fragment.get());
+  for (const ShaderObject* shader : shaders) glAttachShader(program.get(), shader->get());
   glLinkProgram(program.get());
   GLint ok = 0;
   glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
@@ -73,19 +70,17 @@ GlProgram createProgram(const char* vertexSource, const char* fragmentSource, co
   return program;
 }
 
+}  // namespace
+
+GlProgram createProgram(const char* vertexSource, const char* fragmentSource, const std::string& label) {
+  ShaderObject vertex(GL_VERTEX_SHADER, vertexSource, label + " (vertex)");
+  ShaderObject fragment(GL_FRAGMENT_SHADER, fragmentSource, label + " (fragment)");
+  return linkProgram({&vertex, &fragment}, label);
+}
+
 GlProgram createComputeProgram(const char* source, const std::string& label) {
   ShaderObject compute(GL_COMPUTE_SHADER, source, label + " (compute)");
-  GlProgram program(glCreateProgram());
-  glAttachShader(program.get(), compute.get());
-  glLinkProgram(program.get());
-  GLint ok = 0;
-  glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
-  if (!ok) {
-    std::vector<char> log(4096);
-    glGetProgramInfoLog(program.get(), static_cast<GLsizei>(log.size()), nullptr, log.data());
-    throw std::runtime_error("program '" + label + "' does not link: " + log.data());
-  }
-  return program;
+  return linkProgram({&compute}, label);
 }
 
 void checkGlError(const char* what) {
