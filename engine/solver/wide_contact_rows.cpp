@@ -1,6 +1,7 @@
 #include "engine/solver/wide_contact_rows.h"
 
 #include <algorithm>
+#include <cassert>
 
 #include <cstring>
 
@@ -26,58 +27,104 @@ void setLanes(Lanes (&target)[3], int lane, const Vec3& value) {
 }
 
 // The velocities of one side's bodies, lane by lane (zero in empty lanes).
+// Each vector is loaded as whole packets from every lane's body and
+// transposed, so the lanes fill without a round trip through memory; the
+// entries past the third hold what followed it in the body (written back
+// unchanged, see scatter).
+constexpr int blocks = (3 + lanes - 1) / lanes;  // packets per vector
+constexpr int padded = blocks * lanes;
 struct LaneVelocities {
-  Lanes linear[3], angular[3];
+  Lanes linear[padded], angular[padded];
 };
 
+// Doubles readable from every lane's velocities: the three and what follows
+// them in BodyMotion (angularVelocity after linearVelocity, orientationSpin
+// after that), for an empty lane zeros.
+alignas(64) constexpr double noVelocity[3 + padded] = {};
+
+const double* velocityRow(const BodyMotion& motion, bool angular) {
+  assert(motion.angularVelocity.data() == motion.linearVelocity.data() + 3);
+  assert(motion.orientationSpin.data() == motion.angularVelocity.data() + 3);
+  return angular ? motion.angularVelocity.data() : motion.linearVelocity.data();
+}
+
+// Eigen's packets are vector types whose alignment attribute a template
+// argument drops; PacketBlock is Eigen's own way to hold them, so that is fine.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wignored-attributes"
+using PacketBlock = Eigen::internal::PacketBlock<simd::Packet, lanes>;
+#pragma GCC diagnostic pop
+
+[[gnu::always_inline]] inline void transpose(Lanes* block) {
+  if constexpr (lanes > 1) {
+    PacketBlock packets;
+    for (int i = 0; i < lanes; ++i) packets.packet[i] = block[i].value;
+    Eigen::internal::ptranspose(packets);
+    for (int i = 0; i < lanes; ++i) block[i].value = packets.packet[i];
+  }
+}
+
+void gatherRows(const double* const (&rows)[lanes], Lanes (&vector)[padded]) {
+  for (int b = 0; b < blocks; ++b) {
+    Lanes* block = vector + b * lanes;
+    for (int lane = 0; lane < lanes; ++lane) block[lane] = Lanes::load(rows[lane] + b * lanes);
+    transpose(block);
+  }
+}
+
 LaneVelocities gather(const std::array<std::uint32_t, lanes>& ids, const std::vector<SolverBody>& bodies) {
-  alignas(64) double values[6][lanes] = {};
+  const double* linear[lanes];
+  const double* angular[lanes];
   for (int lane = 0; lane < lanes; ++lane) {
-    if (ids[lane] == WideManifolds::empty) continue;
-    const BodyMotion& motion = bodies[ids[lane]].motion;
-    for (int axis = 0; axis < 3; ++axis) {
-      values[axis][lane] = motion.linearVelocity[axis];
-      values[3 + axis][lane] = motion.angularVelocity[axis];
-    }
+    const bool empty = ids[lane] == WideManifolds::empty;
+    linear[lane] = empty ? noVelocity : velocityRow(bodies[ids[lane]].motion, false);
+    angular[lane] = empty ? noVelocity : velocityRow(bodies[ids[lane]].motion, true);
   }
   LaneVelocities result;
-  for (int axis = 0; axis < 3; ++axis) {
-    result.linear[axis] = Lanes::load(values[axis]);
-    result.angular[axis] = Lanes::load(values[3 + axis]);
-  }
+  gatherRows(linear, result.linear);
+  gatherRows(angular, result.angular);
   return result;
+}
+
+void scatterRows(Lanes (&vector)[padded], double* const (&rows)[lanes], const std::array<bool, lanes>& writable) {
+  for (int b = 0; b < blocks; ++b) {
+    Lanes* block = vector + b * lanes;
+    transpose(block);
+    for (int lane = 0; lane < lanes; ++lane)
+      if (writable[lane]) block[lane].store(rows[lane] + b * lanes);
+  }
 }
 
 // Only movable bodies are written: an immovable one (the floor) may sit in
 // several lanes, groups and islands at once, and its velocity never changes.
-void scatter(const LaneVelocities& velocities, const std::array<std::uint32_t, lanes>& ids,
-             std::vector<SolverBody>& bodies) {
-  alignas(64) double values[6][lanes];
-  for (int axis = 0; axis < 3; ++axis) {
-    velocities.linear[axis].store(values[axis]);
-    velocities.angular[axis].store(values[3 + axis]);
-  }
+// Whole packets are stored: the linear ones first, whose last doubles fall on
+// the angular velocity's first as gathered, then the angular ones, which set
+// it and rewrite what follows with the value gathered (a lane's body is this
+// group's alone while it runs).
+void scatter(LaneVelocities velocities, const std::array<std::uint32_t, lanes>& ids,
+             const std::array<bool, lanes>& writable, std::vector<SolverBody>& bodies) {
+  double* linear[lanes];
+  double* angular[lanes];
   for (int lane = 0; lane < lanes; ++lane) {
-    if (ids[lane] == WideManifolds::empty || !bodies[ids[lane]].movable) continue;
-    BodyMotion& motion = bodies[ids[lane]].motion;
-    for (int axis = 0; axis < 3; ++axis) {
-      motion.linearVelocity[axis] = values[axis][lane];
-      motion.angularVelocity[axis] = values[3 + axis][lane];
-    }
+    BodyMotion* motion = writable[lane] ? &bodies[ids[lane]].motion : nullptr;
+    linear[lane] = motion ? motion->linearVelocity.data() : nullptr;
+    angular[lane] = motion ? motion->angularVelocity.data() : nullptr;
   }
+  scatterRows(velocities.linear, linear, writable);
+  scatterRows(velocities.angular, angular, writable);
 }
 
-Lanes dot(const Lanes (&x)[3], const Lanes (&y)[3]) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
+[[gnu::always_inline]] inline Lanes dot(const Lanes* x, const Lanes* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
 
 // The relative velocity along a row, as the scalar solver's rowVelocity.
-Lanes rowVelocity(const LaneVelocities& a, const LaneVelocities& b, const WideManifolds& group, const WidePoint& point,
+[[gnu::always_inline]] inline Lanes rowVelocity(const LaneVelocities& a, const LaneVelocities& b, const WideManifolds& group, const WidePoint& point,
                   int row) {
   Lanes difference[3];
   for (int axis = 0; axis < 3; ++axis) difference[axis] = b.linear[axis] - a.linear[axis];
   return dot(difference, group.direction[row]) + dot(b.angular, point.crossB[row]) - dot(a.angular, point.crossA[row]);
 }
 
-void applyRow(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, const WidePoint& point, int row,
+[[gnu::always_inline]] inline void applyRow(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, const WidePoint& point, int row,
               Lanes impulse) {
   const Lanes linearA = group.inverseMassA * impulse, linearB = group.inverseMassB * impulse;
   for (int axis = 0; axis < 3; ++axis) {
@@ -164,6 +211,8 @@ WideManifolds packWideManifolds(const std::uint32_t* members, int count, const s
     group.manifold[lane] = m;
     group.bodyA[lane] = manifold.a;
     group.bodyB[lane] = manifold.b;
+    group.writableA[lane] = bodies[manifold.a].movable;
+    group.writableB[lane] = bodies[manifold.b].movable;
     setLanes(group.direction[0], lane, manifold.normal);
     setLanes(group.direction[1], lane, first.tangent[0]);
     setLanes(group.direction[2], lane, first.tangent[1]);
@@ -195,8 +244,8 @@ void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies) {
     applyRow(a, b, group, point, 1, point.tangentImpulse[0]);
     applyRow(a, b, group, point, 2, point.tangentImpulse[1]);
   }
-  scatter(a, group.bodyA, bodies);
-  scatter(b, group.bodyB, bodies);
+  scatter(a, group.bodyA, group.writableA, bodies);
+  scatter(b, group.bodyB, group.writableB, bodies);
 }
 
 void solveWide(WideManifolds& group, std::vector<SolverBody>& bodies, const WideSweep& sweep) {
@@ -206,8 +255,8 @@ void solveWide(WideManifolds& group, std::vector<SolverBody>& bodies, const Wide
     solveNormal(a, b, group, group.points[sweep.reversed ? used - 1 - visit : visit], sweep);
   for (int visit = 0; visit < used; ++visit)
     solveFriction(a, b, group, group.points[sweep.reversed ? used - 1 - visit : visit]);
-  scatter(a, group.bodyA, bodies);
-  scatter(b, group.bodyB, bodies);
+  scatter(a, group.bodyA, group.writableA, bodies);
+  scatter(b, group.bodyB, group.writableB, bodies);
 }
 
 void storeWideImpulses(const WideManifolds& group, std::vector<ContactManifold>& manifolds,
