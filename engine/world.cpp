@@ -238,8 +238,8 @@ World::PairTest World::testPair(const BodyPair& pair, const StepContext& context
   // Fat boxes overlap long before the shapes can touch: when even the tight
   // boxes, grown by how far the pair can close this step, stay apart, the
   // narrow phase has nothing to say.
-  test.reach = solver_->contactReach(a, b, context);
-  if (!a.collider().worldBounds(a.transform()).enlarged(test.reach).overlaps(b.collider().worldBounds(b.transform()))) {
+  test.reach = solver_->contactReach(bodyReaches_[pair.a], bodyReaches_[pair.b], context);
+  if (!tightBounds_[pair.a].enlarged(test.reach).overlaps(tightBounds_[pair.b])) {
     test.outcome = PairTest::Outcome::BoundsRejected;
     return test;
   }
@@ -256,7 +256,25 @@ World::PairTest World::testPair(const BodyPair& pair, const StepContext& context
   return test;
 }
 
+// What testPair needs of each body of a candidate pair alone, once per body:
+// a body meets many pairs. Bodies do not move between the passes of a step,
+// but a pass after a wake has other pairs, so each pass measures anew.
+void World::measureBodies(const StepContext& context) {
+  inSomePair_.assign(bodies_.size(), 0);
+  for (const BodyPair& pair : pairs_) inSomePair_[pair.a] = inSomePair_[pair.b] = 1;
+  tightBounds_.resize(bodies_.size());
+  bodyReaches_.resize(bodies_.size());
+  tasks_->parallelFor(bodies_.size(), bodyGrain, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t id = begin; id < end; ++id) {
+      if (!inSomePair_[id]) continue;
+      tightBounds_[id] = bodies_[id].collider().worldBounds(bodies_[id].transform());
+      bodyReaches_[id] = solver_->bodyReach(bodies_[id], context);
+    }
+  });
+}
+
 void World::testPairs(const StepContext& context) {
+  measureBodies(context);
   pairTests_.resize(pairs_.size());
   tasks_->parallelFor(pairs_.size(), pairGrain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) pairTests_[i] = testPair(pairs_[i], context);

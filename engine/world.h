@@ -223,6 +223,7 @@ class World {
     bool offloaded = false;  // the collision offload answers it (testOffloadedPairs)
   };
   PairTest testPair(const BodyPair& pair, const StepContext& context) const;
+  void measureBodies(const StepContext& context);
   void testPairs(const StepContext& context);
   void testOffloadedPairs();
   void gatherContacts(const StepContext& context);
@@ -267,6 +268,9 @@ class World {
   std::unique_ptr<BroadPhase> broadPhase_;
   std::vector<BodyPair> pairs_;
   std::vector<PairTest> pairTests_;          // per candidate pair, this pass (testPairs)
+  std::vector<char> inSomePair_;             // per body, this pass (measureBodies)
+  std::vector<Aabb> tightBounds_;            // per body in a pair, this pass (measureBodies)
+  std::vector<BodyReach> bodyReaches_;       // per body, this pass (measureBodies)
   std::vector<Contact> candidates_;          // tested pairs, for the solver (gatherContacts)
   std::vector<double> reaches_;              // their contactReach
   std::vector<OffloadRequest> offloadRequests_;  // this pass's offloaded pairs (testOffloadedPairs)

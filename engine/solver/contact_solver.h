@@ -35,6 +35,13 @@ struct SolverStepReport {
   double contactHertz = 0.0;        // the stiffest contact frequency any island used
 };
 
+// One body's share of a pair's contact reach (ContactSolver::bodyReach).
+struct BodyReach {
+  Vec3 linearVelocity = Vec3::Zero();  // m/s
+  double acceleration = 0.0;           // m/s^2, this step's
+  double spin = 0.0;                   // m/s: angular speed times the body's bounding radius
+};
+
 class ContactSolver {
  public:
   virtual ~ContactSolver() = default;
@@ -45,7 +52,13 @@ class ContactSolver {
                          const StepContext& step) = 0;
   virtual PredictedMotion predictMotion(const RigidBody& body, const StepContext& step) const = 0;
   // How far apart two surfaces may be and still be handed to addCandidate.
-  virtual double contactReach(const RigidBody& a, const RigidBody& b, const StepContext& step) const = 0;
+  // It comes from what each body alone contributes (bodyReach), which World
+  // finds once per body and pass: a body meets many candidate pairs.
+  virtual BodyReach bodyReach(const RigidBody& body, const StepContext& step) const = 0;
+  virtual double contactReach(const BodyReach& a, const BodyReach& b, const StepContext& step) const = 0;
+  double contactReach(const RigidBody& a, const RigidBody& b, const StepContext& step) const {
+    return contactReach(bodyReach(a, step), bodyReach(b, step), step);
+  }
   // Surfaces this close count as touching: contact events, red boxes, islands.
   virtual double touchingGap() const = 0;
 

@@ -21,7 +21,8 @@ class SeedSolver final : public ContactSolver {
 
   void beginStep(std::vector<RigidBody>& bodies, const std::vector<bool>& movable, const StepContext& step) override;
   PredictedMotion predictMotion(const RigidBody& body, const StepContext& step) const override;
-  double contactReach(const RigidBody&, const RigidBody&, const StepContext&) const override { return reach_; }
+  BodyReach bodyReach(const RigidBody&, const StepContext&) const override { return {}; }
+  double contactReach(const BodyReach&, const BodyReach&, const StepContext&) const override { return reach_; }
   double touchingGap() const override { return 0.0; }
   void clearContacts() override {}
   int addCandidate(const Contact&, const RigidBody&, const RigidBody&, double) override { return 0; }

@@ -15,6 +15,10 @@
 namespace physdbg {
 namespace {
 
+// Where batchIslands closes a batch: enough manifolds that a thread's share
+// outweighs handing it over, few enough that a thousand boxes make several.
+constexpr std::size_t batchManifolds = 128;
+
 bool touchesKinematic(const std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds,
                       const ContactIsland& island) {
   for (std::uint32_t m : island.manifolds)
@@ -104,12 +108,14 @@ PredictedMotion SequentialImpulseSolver::predictMotion(const RigidBody& body, co
 // How far apart two surfaces may be and still get a (speculative) contact:
 // the most they can close in one step, plus a few slops so resting contacts
 // are found before they touch.
-double SequentialImpulseSolver::contactReach(const RigidBody& a, const RigidBody& b, const StepContext& step) const {
-  const double reachA = a.collider().localBounds().halfExtents().norm();
-  const double reachB = b.collider().localBounds().halfExtents().norm();
-  const double closingSpeed = (b.linearVelocity() - a.linearVelocity()).norm() +
-                              (a.stepAcceleration().norm() + b.stepAcceleration().norm()) * step.dt +
-                              a.angularVelocity().norm() * reachA + b.angularVelocity().norm() * reachB;
+BodyReach SequentialImpulseSolver::bodyReach(const RigidBody& body, const StepContext&) const {
+  const double radius = body.collider().localBounds().halfExtents().norm();
+  return {body.linearVelocity(), body.stepAcceleration().norm(), body.angularVelocity().norm() * radius};
+}
+
+double SequentialImpulseSolver::contactReach(const BodyReach& a, const BodyReach& b, const StepContext& step) const {
+  const double closingSpeed = (b.linearVelocity - a.linearVelocity).norm() + (a.acceleration + b.acceleration) * step.dt +
+                              a.spin + b.spin;
   return 4.0 * settings_.linearSlop + closingSpeed * step.dt;
 }
 
@@ -282,6 +288,12 @@ void SequentialImpulseSolver::integrateFreeBodies(std::vector<RigidBody>& bodies
 // Islands solved together: islands that take the same substeps share one
 // colouring, so many small ones (boxes resting alone on the floor) still
 // fill the SIMD lanes. An island that touches a kinematic body stays alone.
+// A batch closes once it holds batchManifolds manifolds, so a world of many
+// small islands gives batches that threads solve side by side, each through
+// all its substeps with no waiting on the others (colours within one batch
+// wait for each other every sweep). Islands share no movable body, so an
+// island's colours and result do not depend on which batch it is in; the
+// cut depends on manifold counts alone, never on the thread count.
 // Batches follow the island order, and each keeps its manifolds ascending.
 std::vector<SequentialImpulseSolver::IslandWork> SequentialImpulseSolver::batchIslands(
     const std::vector<ContactIsland>& islands, const std::vector<SubstepContext>& substeps,
@@ -298,6 +310,7 @@ std::vector<SequentialImpulseSolver::IslandWork> SequentialImpulseSolver::batchI
     ContactIsland& batch = batches[index].island;
     batch.manifolds.insert(batch.manifolds.end(), islands[i].manifolds.begin(), islands[i].manifolds.end());
     batch.bodies.insert(batch.bodies.end(), islands[i].bodies.begin(), islands[i].bodies.end());
+    if (!kinematic[i] && batch.manifolds.size() >= batchManifolds) open.erase({substeps[i].count, substeps[i].contactHertz});
   }
   for (IslandWork& batch : batches) {
     std::sort(batch.island.manifolds.begin(), batch.island.manifolds.end());

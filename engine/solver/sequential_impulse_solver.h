@@ -16,7 +16,8 @@
 // (contact_islands.h), so only the pile that needs it pays for it.
 //
 // Order and threads: islands that take the same substeps are solved as one
-// batch (a thousand boxes resting alone on the floor are one batch), whose
+// batch, up to about a hundred manifolds (a thousand boxes resting alone on
+// the floor make a few batches, which threads solve side by side), whose
 // manifolds are coloured (constraint_colouring.h) so that a colour's
 // manifolds share no movable body. Sweeps go colour by colour, solving a
 // colour's manifolds side by side in SIMD lanes (wide_contact_rows.h) and
@@ -45,7 +46,9 @@ class SequentialImpulseSolver final : public ContactSolver {
   // a second narrow-phase pass (a touch woke a body) must not lose them.
   void beginStep(std::vector<RigidBody>&, const std::vector<bool>&, const StepContext&) override;
   PredictedMotion predictMotion(const RigidBody& body, const StepContext& step) const override;
-  double contactReach(const RigidBody& a, const RigidBody& b, const StepContext& step) const override;
+  BodyReach bodyReach(const RigidBody& body, const StepContext& step) const override;
+  double contactReach(const BodyReach& a, const BodyReach& b, const StepContext& step) const override;
+  using ContactSolver::contactReach;
   double touchingGap() const override { return settings_.linearSlop; }
   void clearContacts() override;
   int addCandidate(const Contact& contact, const RigidBody& a, const RigidBody& b, double reach) override;
