@@ -78,6 +78,13 @@ void integrateVelocity(BodyMotion& motion, const MotionProperties& properties, d
 void integratePosition(BodyMotion& motion, double h) {
   motion.position += motion.linearVelocity * h;
   const Vec3 spin = motion.orientationSpin + (motion.angularVelocity - motion.spinAfterGyroscopicStep);
+  if (spin.x() == 0.0 && spin.y() == 0.0 && spin.z() == 0.0) {
+    // A body that does not turn keeps its orientation bit for bit (it is not
+    // renormalised), and spares a resting pile the square root per substep.
+    motion.orientationSpin.setZero();
+    motion.spinAfterGyroscopicStep.setZero();
+    return;
+  }
   const Quat turn = rotationFromVector(spin * h);
   motion.orientation = (turn * motion.orientation).normalized();
   // The midpoint rule advanced the body-frame spin; it turns with the body.

@@ -272,8 +272,8 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
 // Bodies in no manifold take the base substeps, as a calm island would.
 void SequentialImpulseSolver::integrateFreeBodies(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                                   const std::vector<bool>& inIsland, const SubstepContext& substeps) {
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    if (!movable[i] || inIsland[i]) continue;
+  forEach(bodies.size(), 256, [&](std::size_t i) {
+    if (!movable[i] || inIsland[i]) return;
     BodyMotion motion = bodies[i].motion();
     const MotionProperties properties = bodies[i].motionProperties();
     for (int substep = 0; substep < substeps.count; ++substep) {
@@ -282,7 +282,7 @@ void SequentialImpulseSolver::integrateFreeBodies(std::vector<RigidBody>& bodies
     }
     bodies[i].setMotion(motion);
     lastSubstep_[i] = substeps.h;
-  }
+  });
 }
 
 // Islands solved together: islands that take the same substeps share one
@@ -465,28 +465,26 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
                                       std::vector<ContactManifold>& manifolds) {
   solverBodies_.resize(bodies.size());
   motionProperties_.resize(bodies.size());
-  std::vector<bool> listed(bodies.size(), false);
-  for (const ContactManifold& manifold : manifolds) {
-    for (std::uint32_t id : {manifold.a, manifold.b}) {
-      if (listed[id]) continue;
-      listed[id] = true;
-      SolverBody& body = solverBodies_[id];
-      const RigidBody& source = bodies[id];
-      body.movable = movable[id];
-      body.inverseMass = movable[id] ? source.inverseMass() : 0.0;
-      body.inverseInertia = movable[id] ? source.worldInverseInertia() : Mat3::Zero();
-      for (int axis = 0; axis < 3; ++axis) {
-        body.linearMask[axis] = source.lockTranslation()[axis] ? 0.0 : 1.0;
-        body.angularMask[axis] = source.lockRotation()[axis] ? 0.0 : 1.0;
-      }
-      body.motion = source.motion();
-      motionProperties_[id] = source.motionProperties();
-      Vec3 extents = source.collider().localBounds().halfExtents() * 2.0;
-      std::sort(extents.data(), extents.data() + 3);
-      body.size = extents[1];
-      body.rotation = source.orientation().toRotationMatrix();
+  listed_.assign(bodies.size(), 0);
+  for (const ContactManifold& manifold : manifolds) listed_[manifold.a] = listed_[manifold.b] = 1;
+  forEach(bodies.size(), 256, [&](std::size_t id) {
+    if (!listed_[id]) return;
+    SolverBody& body = solverBodies_[id];
+    const RigidBody& source = bodies[id];
+    body.movable = movable[id];
+    body.inverseMass = movable[id] ? source.inverseMass() : 0.0;
+    body.inverseInertia = movable[id] ? source.worldInverseInertia() : Mat3::Zero();
+    for (int axis = 0; axis < 3; ++axis) {
+      body.linearMask[axis] = source.lockTranslation()[axis] ? 0.0 : 1.0;
+      body.angularMask[axis] = source.lockRotation()[axis] ? 0.0 : 1.0;
     }
-  }
+    body.motion = source.motion();
+    motionProperties_[id] = source.motionProperties();
+    Vec3 extents = source.collider().localBounds().halfExtents() * 2.0;
+    std::sort(extents.data(), extents.data() + 3);
+    body.size = extents[1];
+    body.rotation = source.orientation().toRotationMatrix();
+  });
   constraints_.resize(manifolds.size() * ContactManifold::maxPoints);
   massScales_ = supportMassScales(manifolds);
   forEach(manifolds.size(), 256, [&](std::size_t m) { prepareManifold(bodies, manifolds[m], m); });
@@ -567,8 +565,9 @@ std::vector<std::uint32_t> SequentialImpulseSolver::kinematicNeighbours(const st
 void SequentialImpulseSolver::integratePositions(const std::vector<std::uint32_t>& ids, double h) {
   forEach(ids.size(), 256, [&](std::size_t i) {
     SolverBody& body = solverBodies_[ids[i]];
+    const Eigen::Vector4d before = body.motion.orientation.coeffs();
     integratePosition(body.motion, h);
-    body.rotation = body.motion.orientation.toRotationMatrix();
+    if (body.motion.orientation.coeffs() != before) body.rotation = body.motion.orientation.toRotationMatrix();
   });
 }
 
