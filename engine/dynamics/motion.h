@@ -9,9 +9,9 @@
 
 namespace physdbg {
 
-// The wide contact solve loads linearVelocity, angularVelocity and
-// orientationSpin as one run of doubles (wide_contact_rows.cpp): keep the
-// three together and in this order.
+// The wide contact solve loads and stores linearVelocity and angularVelocity
+// as one run of six doubles (wide_contact_rows.cpp): keep the two together
+// and in this order.
 struct BodyMotion {
   Vec3 position = Vec3::Zero();
   Quat orientation = Quat::Identity();

@@ -26,26 +26,26 @@ void setLanes(Lanes (&target)[3], int lane, const Vec3& value) {
   for (int axis = 0; axis < 3; ++axis) setLane(target[axis], lane, value[axis]);
 }
 
-// The velocities of one side's bodies, lane by lane (zero in empty lanes).
-// Each vector is loaded as whole packets from every lane's body and
-// transposed, so the lanes fill without a round trip through memory; the
-// entries past the third hold what followed it in the body (written back
-// unchanged, see scatter).
-constexpr int blocks = (3 + lanes - 1) / lanes;  // packets per vector
-constexpr int padded = blocks * lanes;
+// The velocities of one side's bodies, lane by lane (zero in empty lanes):
+// v[0..2] linear, v[3..5] angular. A body's six velocities are one run of
+// doubles (BodyMotion keeps angularVelocity right after linearVelocity), read
+// as whole packets from every lane's body and transposed, so the lanes fill
+// without a round trip through memory. Packets start at 0, W, 2W, ... and the
+// last one ends at the sixth double (with 4 lanes: at 0 and 2, overlapping).
 struct LaneVelocities {
-  Lanes linear[padded], angular[padded];
+  Lanes v[6];
+  const Lanes* linear() const { return v; }
+  const Lanes* angular() const { return v + 3; }
 };
 
-// Doubles readable from every lane's velocities: the three and what follows
-// them in BodyMotion (angularVelocity after linearVelocity, orientationSpin
-// after that), for an empty lane zeros.
-alignas(64) constexpr double noVelocity[3 + padded] = {};
+constexpr int blocks = (6 + lanes - 1) / lanes;
+constexpr int blockStart(int block) { return block * lanes + lanes <= 6 ? block * lanes : 6 - lanes; }
 
-const double* velocityRow(const BodyMotion& motion, bool angular) {
+alignas(64) constexpr double noVelocity[6] = {};  // an empty lane's
+
+const double* velocities(const BodyMotion& motion) {
   assert(motion.angularVelocity.data() == motion.linearVelocity.data() + 3);
-  assert(motion.orientationSpin.data() == motion.angularVelocity.data() + 3);
-  return angular ? motion.angularVelocity.data() : motion.linearVelocity.data();
+  return motion.linearVelocity.data();
 }
 
 // Eigen's packets are vector types whose alignment attribute a template
@@ -64,54 +64,32 @@ using PacketBlock = Eigen::internal::PacketBlock<simd::Packet, lanes>;
   }
 }
 
-void gatherRows(const double* const (&rows)[lanes], Lanes (&vector)[padded]) {
-  for (int b = 0; b < blocks; ++b) {
-    Lanes* block = vector + b * lanes;
-    for (int lane = 0; lane < lanes; ++lane) block[lane] = Lanes::load(rows[lane] + b * lanes);
-    transpose(block);
-  }
-}
-
-LaneVelocities gather(const std::array<std::uint32_t, lanes>& ids, const std::vector<SolverBody>& bodies) {
-  const double* linear[lanes];
-  const double* angular[lanes];
-  for (int lane = 0; lane < lanes; ++lane) {
-    const bool empty = ids[lane] == WideManifolds::empty;
-    linear[lane] = empty ? noVelocity : velocityRow(bodies[ids[lane]].motion, false);
-    angular[lane] = empty ? noVelocity : velocityRow(bodies[ids[lane]].motion, true);
-  }
+[[gnu::always_inline]] inline LaneVelocities gather(const std::array<std::uint32_t, lanes>& ids,
+                                                    const std::vector<SolverBody>& bodies) {
+  const double* rows[lanes];
+  for (int lane = 0; lane < lanes; ++lane)
+    rows[lane] = ids[lane] == WideManifolds::empty ? noVelocity : velocities(bodies[ids[lane]].motion);
   LaneVelocities result;
-  gatherRows(linear, result.linear);
-  gatherRows(angular, result.angular);
-  return result;
-}
-
-void scatterRows(Lanes (&vector)[padded], double* const (&rows)[lanes], const std::array<bool, lanes>& writable) {
   for (int b = 0; b < blocks; ++b) {
-    Lanes* block = vector + b * lanes;
+    Lanes block[lanes];
+    for (int lane = 0; lane < lanes; ++lane) block[lane] = Lanes::load(rows[lane] + blockStart(b));
     transpose(block);
-    for (int lane = 0; lane < lanes; ++lane)
-      if (writable[lane]) block[lane].store(rows[lane] + b * lanes);
+    for (int i = 0; i < lanes; ++i) result.v[blockStart(b) + i] = block[i];
   }
+  return result;
 }
 
 // Only movable bodies are written: an immovable one (the floor) may sit in
 // several lanes, groups and islands at once, and its velocity never changes.
-// Whole packets are stored: the linear ones first, whose last doubles fall on
-// the angular velocity's first as gathered, then the angular ones, which set
-// it and rewrite what follows with the value gathered (a lane's body is this
-// group's alone while it runs).
-void scatter(LaneVelocities velocities, const std::array<std::uint32_t, lanes>& ids,
-             const std::array<bool, lanes>& writable, std::vector<SolverBody>& bodies) {
-  double* linear[lanes];
-  double* angular[lanes];
-  for (int lane = 0; lane < lanes; ++lane) {
-    BodyMotion* motion = writable[lane] ? &bodies[ids[lane]].motion : nullptr;
-    linear[lane] = motion ? motion->linearVelocity.data() : nullptr;
-    angular[lane] = motion ? motion->angularVelocity.data() : nullptr;
+[[gnu::always_inline]] inline void scatter(const LaneVelocities& velocities, const std::array<std::uint32_t, lanes>& ids,
+                                           const std::array<bool, lanes>& writable, std::vector<SolverBody>& bodies) {
+  for (int b = 0; b < blocks; ++b) {
+    Lanes block[lanes];
+    for (int i = 0; i < lanes; ++i) block[i] = velocities.v[blockStart(b) + i];
+    transpose(block);
+    for (int lane = 0; lane < lanes; ++lane)
+      if (writable[lane]) block[lane].store(bodies[ids[lane]].motion.linearVelocity.data() + blockStart(b));
   }
-  scatterRows(velocities.linear, linear, writable);
-  scatterRows(velocities.angular, angular, writable);
 }
 
 [[gnu::always_inline]] inline Lanes dot(const Lanes* x, const Lanes* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
@@ -120,18 +98,18 @@ void scatter(LaneVelocities velocities, const std::array<std::uint32_t, lanes>& 
 [[gnu::always_inline]] inline Lanes rowVelocity(const LaneVelocities& a, const LaneVelocities& b, const WideManifolds& group, const WidePoint& point,
                   int row) {
   Lanes difference[3];
-  for (int axis = 0; axis < 3; ++axis) difference[axis] = b.linear[axis] - a.linear[axis];
-  return dot(difference, group.direction[row]) + dot(b.angular, point.crossB[row]) - dot(a.angular, point.crossA[row]);
+  for (int axis = 0; axis < 3; ++axis) difference[axis] = b.v[axis] - a.v[axis];
+  return dot(difference, group.direction[row]) + dot(b.angular(), point.crossB[row]) - dot(a.angular(), point.crossA[row]);
 }
 
 [[gnu::always_inline]] inline void applyRow(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, const WidePoint& point, int row,
               Lanes impulse) {
   const Lanes linearA = group.inverseMassA * impulse, linearB = group.inverseMassB * impulse;
   for (int axis = 0; axis < 3; ++axis) {
-    a.linear[axis] -= linearA * (group.direction[row][axis] * group.linearMaskA[axis]);
-    a.angular[axis] -= impulse * point.turnA[row][axis];
-    b.linear[axis] += linearB * (group.direction[row][axis] * group.linearMaskB[axis]);
-    b.angular[axis] += impulse * point.turnB[row][axis];
+    a.v[axis] -= linearA * (group.direction[row][axis] * group.linearMaskA[axis]);
+    a.v[3 + axis] -= impulse * point.turnA[row][axis];
+    b.v[axis] += linearB * (group.direction[row][axis] * group.linearMaskB[axis]);
+    b.v[3 + axis] += impulse * point.turnB[row][axis];
   }
 }
 
