@@ -154,14 +154,18 @@ void World::scheduleForce(const ScheduledForce& force) {
 void World::applyForces() {
   applyScheduledForces();
   wakePushedBodies();
+  // Each awake body's forces become its step's accelerations on its own, in parallel.
+  tasks_->parallelFor(bodies_.size(), bodyGrain, [&](std::size_t begin, std::size_t end) {
+    for (auto id = static_cast<BodyId>(begin); id < end; ++id)
+      if (takesPart(id) && !bodies_[id].isStatic() && !asleep_[id]) bodies_[id].beginStep(settings_.gravity);
+  });
   for (BodyId id = 0; id < bodies_.size(); ++id) {
-    RigidBody& body = bodies_[id];
+    const RigidBody& body = bodies_[id];
     if (!takesPart(id) || body.isStatic()) continue;
     if (asleep_[id]) {
       ++stats_.sleepingBodies;
       continue;
     }
-    body.beginStep(settings_.gravity);
     ++stats_.awakeBodies;
     if (body.hasLocks()) ++stats_.lockedBodies;
   }
