@@ -133,9 +133,11 @@ class DynamicAabbTree {
 // Aabb::overlaps without branches: traversals test two boxes per node, and
 // six comparisons combined with & cost less than the mispredicted jumps of
 // an early exit (whether a box overlaps is close to a coin toss there).
+// (The comparisons are counted as ints so compilers see the & is meant.)
 inline bool overlapping(const Aabb& a, const Aabb& b) {
-  return (a.min.x() <= b.max.x()) & (b.min.x() <= a.max.x()) & (a.min.y() <= b.max.y()) & (b.min.y() <= a.max.y()) &
-         (a.min.z() <= b.max.z()) & (b.min.z() <= a.max.z());
+  const auto bit = [](bool value) { return static_cast<int>(value); };
+  return (bit(a.min.x() <= b.max.x()) & bit(b.min.x() <= a.max.x()) & bit(a.min.y() <= b.max.y()) &
+          bit(b.min.y() <= a.max.y()) & bit(a.min.z() <= b.max.z()) & bit(b.min.z() <= a.max.z())) != 0;
 }
 
 // Entry parameter t of the segment origin + t * direction into box, or a negative value when it misses

@@ -31,10 +31,4 @@ inline BoxPair randomBoxPair(std::mt19937& rng, double halfMin = 0.1, double hal
   return pair;
 }
 
-inline NarrowPhaseOptions gjkEpaOnly() {
-  NarrowPhaseOptions options;
-  options.boxBoxSat = false;
-  return options;
-}
-
 }  // namespace physdbg::testing

@@ -56,4 +56,12 @@ inline std::vector<Transform> testMotions(unsigned seed) {
   return motions;
 }
 
+// Box pairs through GJK + EPA, as before the box-box SAT path existed: the
+// reference the SAT path is checked against.
+inline NarrowPhaseOptions gjkEpaOnly() {
+  NarrowPhaseOptions options;
+  options.boxBoxSat = false;
+  return options;
+}
+
 }  // namespace physdbg::testing

@@ -13,6 +13,7 @@ namespace {
 using testing::compose;
 using testing::expectFinite;
 using testing::expectSameUnderMotion;
+using testing::gjkEpaOnly;
 using testing::testMotions;
 
 constexpr double kTight = 1e-9;  // relative to unit-sized shapes
@@ -20,13 +21,6 @@ constexpr double kTight = 1e-9;  // relative to unit-sized shapes
 NarrowPhaseOptions generalOnly() {
   NarrowPhaseOptions options;
   options.analyticFastPaths = false;
-  return options;
-}
-
-// Box pairs through GJK + EPA, as before the box-box path existed.
-NarrowPhaseOptions withoutBoxBox() {
-  NarrowPhaseOptions options;
-  options.boxBoxSat = false;
   return options;
 }
 
@@ -115,7 +109,7 @@ TEST(NarrowPhaseContact, BoxSphereFaceEdgeAndVertex) {
 
 TEST(NarrowPhaseContact, CubesOnePointNineApart) {
   BoxCollider cube(Vec3(1, 1, 1));
-  const ContactResult r = collide(cube, at(0, 0, 0), cube, at(0, 0, 1.9), withoutBoxBox());
+  const ContactResult r = collide(cube, at(0, 0, 0), cube, at(0, 0, 1.9), gjkEpaOnly());
   expectFinite(r);
   EXPECT_EQ(r.status, ContactStatus::Penetrating);
   EXPECT_NEAR(r.depth, 0.1, kTight);
@@ -242,8 +236,8 @@ TEST(NarrowPhaseContact, CountersTallyPaths) {
   BoxCollider box(Vec3(1, 1, 1));
   NarrowPhaseCounters counters;
   counters.add(collide(sphere, Transform{}, sphere, at(1, 0, 0)));
-  counters.add(collide(box, Transform{}, box, at(1, 0, 0), withoutBoxBox()));
-  counters.add(collide(box, Transform{}, box, at(5, 0, 0), withoutBoxBox()));
+  counters.add(collide(box, Transform{}, box, at(1, 0, 0), gjkEpaOnly()));
+  counters.add(collide(box, Transform{}, box, at(5, 0, 0), gjkEpaOnly()));
   EXPECT_EQ(counters.pairs, 3);
   EXPECT_EQ(counters.fastPath, 1);
   EXPECT_EQ(counters.gjk, 2);
