@@ -114,8 +114,8 @@ BodyReach SequentialImpulseSolver::bodyReach(const RigidBody& body, const StepCo
 }
 
 double SequentialImpulseSolver::contactReach(const BodyReach& a, const BodyReach& b, const StepContext& step) const {
-  const double closingSpeed = (b.linearVelocity - a.linearVelocity).norm() + (a.acceleration + b.acceleration) * step.dt +
-                              a.spin + b.spin;
+  const double closingSpeed =
+      (b.linearVelocity - a.linearVelocity).norm() + (a.acceleration + b.acceleration) * step.dt + a.spin + b.spin;
   return 4.0 * settings_.linearSlop + closingSpeed * step.dt;
 }
 
@@ -310,7 +310,8 @@ std::vector<SequentialImpulseSolver::IslandWork> SequentialImpulseSolver::batchI
     ContactIsland& batch = batches[index].island;
     batch.manifolds.insert(batch.manifolds.end(), islands[i].manifolds.begin(), islands[i].manifolds.end());
     batch.bodies.insert(batch.bodies.end(), islands[i].bodies.begin(), islands[i].bodies.end());
-    if (!kinematic[i] && batch.manifolds.size() >= batchManifolds) open.erase({substeps[i].count, substeps[i].contactHertz});
+    if (!kinematic[i] && batch.manifolds.size() >= batchManifolds)
+      open.erase({substeps[i].count, substeps[i].contactHertz});
   }
   for (IslandWork& batch : batches) {
     std::sort(batch.island.manifolds.begin(), batch.island.manifolds.end());

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cassert>
-
 #include <cstring>
 
 namespace physdbg {
@@ -81,7 +80,8 @@ using PacketBlock = Eigen::internal::PacketBlock<simd::Packet, lanes>;
 
 // Only movable bodies are written: an immovable one (the floor) may sit in
 // several lanes, groups and islands at once, and its velocity never changes.
-[[gnu::always_inline]] inline void scatter(const LaneVelocities& velocities, const std::array<std::uint32_t, lanes>& ids,
+[[gnu::always_inline]] inline void scatter(const LaneVelocities& velocities,
+                                           const std::array<std::uint32_t, lanes>& ids,
                                            const std::array<bool, lanes>& writable, std::vector<SolverBody>& bodies) {
   for (int b = 0; b < blocks; ++b) {
     Lanes block[lanes];
@@ -92,18 +92,21 @@ using PacketBlock = Eigen::internal::PacketBlock<simd::Packet, lanes>;
   }
 }
 
-[[gnu::always_inline]] inline Lanes dot(const Lanes* x, const Lanes* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
-
-// The relative velocity along a row, as the scalar solver's rowVelocity.
-[[gnu::always_inline]] inline Lanes rowVelocity(const LaneVelocities& a, const LaneVelocities& b, const WideManifolds& group, const WidePoint& point,
-                  int row) {
-  Lanes difference[3];
-  for (int axis = 0; axis < 3; ++axis) difference[axis] = b.v[axis] - a.v[axis];
-  return dot(difference, group.direction[row]) + dot(b.angular(), point.crossB[row]) - dot(a.angular(), point.crossA[row]);
+[[gnu::always_inline]] inline Lanes dot(const Lanes* x, const Lanes* y) {
+  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
 }
 
-[[gnu::always_inline]] inline void applyRow(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, const WidePoint& point, int row,
-              Lanes impulse) {
+// The relative velocity along a row, as the scalar solver's rowVelocity.
+[[gnu::always_inline]] inline Lanes rowVelocity(const LaneVelocities& a, const LaneVelocities& b,
+                                                const WideManifolds& group, const WidePoint& point, int row) {
+  Lanes difference[3];
+  for (int axis = 0; axis < 3; ++axis) difference[axis] = b.linear()[axis] - a.linear()[axis];
+  return dot(difference, group.direction[row]) + dot(b.angular(), point.crossB[row]) -
+         dot(a.angular(), point.crossA[row]);
+}
+
+[[gnu::always_inline]] inline void applyRow(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group,
+                                            const WidePoint& point, int row, Lanes impulse) {
   const Lanes linearA = group.inverseMassA * impulse, linearB = group.inverseMassB * impulse;
   for (int axis = 0; axis < 3; ++axis) {
     a.v[axis] -= linearA * (group.direction[row][axis] * group.linearMaskA[axis]);

@@ -34,7 +34,7 @@ struct WidePoint {
 struct WideManifolds {
   static constexpr std::uint32_t empty = ~0u;
   std::array<std::uint32_t, simd::width> manifold, bodyA, bodyB;  // `empty` in unused lanes
-  std::array<bool, simd::width> writableA{}, writableB{};  // a movable body in the lane
+  std::array<bool, simd::width> writableA{}, writableB{};         // a movable body in the lane
   simd::Lanes direction[3][3];  // [row][axis]: the normal, then the two tangents
   simd::Lanes inverseMassA, inverseMassB;  // as scaled for the contact
   simd::Lanes linearMaskA[3], linearMaskB[3];
