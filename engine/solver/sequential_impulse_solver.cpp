@@ -98,11 +98,23 @@ inline void SequentialImpulseSolver::applyNormal(const ContactManifold& manifold
 }
 
 // The box covers the whole step's sweep, so a fast body finds what lies
-// ahead and gets speculative contacts before it arrives.
+// ahead and gets speculative contacts before it arrives. It grows by the
+// body's share of any contact reach (below) in every direction, not just
+// along its displacement, so a pair the narrow phase may keep is found by any
+// broad phase, whatever its margins: the contacts, and with them which
+// bodies rest alone (loneSubsteps), do not depend on the broad phase. Spin is
+// left to the broad phase's margin (0.1 m by default, about 6 m/s at the rim
+// at 60 Hz): a long rod spinning fast would otherwise pair with everything.
 PredictedMotion SequentialImpulseSolver::predictMotion(const RigidBody& body, const StepContext& step) const {
   const Vec3 displacement = (body.linearVelocity() + body.stepAcceleration() * step.dt) * step.dt;
+  const BodyReach reach = bodyReach(body, step);
+  const double share =
+      4.0 * settings_.linearSlop + (reach.linearVelocity.norm() + reach.acceleration * step.dt) * step.dt;
   const Aabb box = body.collider().worldBounds(body.transform());
-  return {box.merged({box.min + displacement, box.max + displacement}), displacement};
+  // A body whose motion turned non-finite is reported and frozen after the
+  // step; its box stays where it is.
+  if (!std::isfinite(share)) return {box, displacement};
+  return {box.enlarged(share), displacement};
 }
 
 // How far apart two surfaces may be and still get a (speculative) contact:
@@ -235,8 +247,8 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
   std::vector<char> kinematic(islands.size(), 0);
   forEach(islands.size(), 16, [&](std::size_t i) {
     const ContactIsland& island = islands[i];
-    substeps[i] = chooseSubsteps(manifolds, island, loads, g, step);
     kinematic[i] = touchesKinematic(bodies, manifolds, island);
+    substeps[i] = chooseSubsteps(manifolds, island, loads, g, step, restsAlone(manifolds, island) && !kinematic[i]);
     if (!settings_.warmStarting) return;
     rescaleWarmStart(manifolds, island, movable, substeps[i].h);
     for (std::uint32_t m : island.manifolds) seedNewContact(manifolds[m], loads[m], touching_[m], g, substeps[i].h);
@@ -301,8 +313,9 @@ std::vector<SequentialImpulseSolver::IslandWork> SequentialImpulseSolver::batchI
   std::vector<IslandWork> batches;
   std::map<std::pair<int, double>, std::size_t> open;  // by substep count and frequency
   for (std::size_t i = 0; i < islands.size(); ++i) {
+    const std::pair<int, double> key{substeps[i].count, substeps[i].contactHertz};
     std::size_t index = batches.size();
-    if (!kinematic[i]) index = open.try_emplace({substeps[i].count, substeps[i].contactHertz}, index).first->second;
+    if (!kinematic[i]) index = open.try_emplace(key, index).first->second;
     if (index == batches.size()) {
       batches.emplace_back().substeps = substeps[i];
       batches.back().touchesKinematic = kinematic[i] != 0;
@@ -310,8 +323,7 @@ std::vector<SequentialImpulseSolver::IslandWork> SequentialImpulseSolver::batchI
     ContactIsland& batch = batches[index].island;
     batch.manifolds.insert(batch.manifolds.end(), islands[i].manifolds.begin(), islands[i].manifolds.end());
     batch.bodies.insert(batch.bodies.end(), islands[i].bodies.begin(), islands[i].bodies.end());
-    if (!kinematic[i] && batch.manifolds.size() >= batchManifolds)
-      open.erase({substeps[i].count, substeps[i].contactHertz});
+    if (!kinematic[i] && batch.manifolds.size() >= batchManifolds) open.erase(key);
   }
   for (IslandWork& batch : batches) {
     std::sort(batch.island.manifolds.begin(), batch.island.manifolds.end());
@@ -400,16 +412,28 @@ void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::v
   for (std::uint32_t id : island.bodies) bodies[id].setMotion(solverBodies_[id].motion);
 }
 
+// One movable body touching something immovable. A body still in flight,
+// with speculative contacts alone, keeps the full substeps: a box arriving at
+// 200 m/s needs them to stop flat against a wall without spinning up.
+bool SequentialImpulseSolver::restsAlone(const std::vector<ContactManifold>& manifolds,
+                                         const ContactIsland& island) const {
+  if (island.bodies.size() != 1) return false;
+  for (std::uint32_t m : island.manifolds)
+    if (touchingPoints(manifolds[m], touching_[m]) > 0) return true;
+  return false;
+}
+
 // The contact frequency is the settings' unless the most loaded touching
 // point would then settle deeper than restingOverlap; substeps follow the
 // frequency, since a soft contact stiffer than a quarter of the substep rate
 // rings. Past maxSubsteps the frequency is capped and the overlap grows.
+// An island of one movable body resting on something starts from loneSubsteps.
 SubstepContext SequentialImpulseSolver::chooseSubsteps(const std::vector<ContactManifold>& manifolds,
                                                        const ContactIsland& island, const std::vector<double>& loads,
-                                                       double gravity, const StepContext& step) const {
+                                                       double gravity, const StepContext& step, bool lone) const {
   const SolverSettings& settings = settings_;
   const double dt = step.dt;
-  const int fewest = std::max(settings.substeps, 1);
+  const int fewest = std::max(lone ? std::min(settings.loneSubsteps, settings.substeps) : settings.substeps, 1);
   const int most = std::max(settings.maxSubsteps, fewest);
   double hertz = settings.contactHertz;
   if (hertz > 0.0 && settings.restingOverlap > 0.0 && most > fewest) {

@@ -92,8 +92,11 @@ class SequentialImpulseSolver final : public ContactSolver {
     double largestPenetration = 0.0;
   };
 
+  bool restsAlone(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
+  // lone: the island takes SolverSettings' loneSubsteps and loneIterations.
   SubstepContext chooseSubsteps(const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
-                                const std::vector<double>& loads, double gravity, const StepContext& step) const;
+                                const std::vector<double>& loads, double gravity, const StepContext& step,
+                                bool lone) const;
   double bodySize(const ContactManifold& manifold) const;
   void rescaleWarmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
                         const std::vector<bool>& movable, double substep) const;

@@ -51,6 +51,13 @@ struct SolverSettings {
   // converge much better than iterations for stacks (Catto, "Solver2D").
   int substeps = 8;
   int velocityIterations = 2;
+  // An island of one movable body resting on something immovable (a box
+  // alone on the floor, a ball rolling on a ramp) has no chain of contacts
+  // for many substeps to carry a load along, so it takes at most
+  // loneSubsteps (Box2D v3's 4): half the sweeps. Stacks, piles and bodies in
+  // flight keep `substeps`; the resting-load stiffening still adds more.
+  // loneSubsteps = substeps turns this off.
+  int loneSubsteps = 4;
   bool warmStarting = true;
   // Solve each colour's manifolds simd::width at a time in SIMD lanes
   // (wide_contact_rows.h); off, one by one in the same order. Same answer up
