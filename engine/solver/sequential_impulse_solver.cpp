@@ -61,6 +61,20 @@ inline double SequentialImpulseSolver::separation(const ContactManifold& manifol
   return ((b.motion.position + b.rotation * point.localB) - (a.motion.position + a.rotation * point.localA)).dot(manifold.normal);
 }
 
+// Every point's separation at once, in the normal's frame: n . (pB + RB lB -
+// pA - RA lA) = n . (pB - pA) + (RB^T n) . lB - (RA^T n) . lA, so a manifold
+// turns the normal into each body's frame once instead of each local point
+// into the world (two matrix products per manifold, not two per point).
+void SequentialImpulseSolver::measureManifoldGaps(const ContactManifold& manifold, PointConstraint* constraints) const {
+  const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
+  const double centres = (b.motion.position - a.motion.position).dot(manifold.normal);
+  const Vec3 normalInA = a.rotation.transpose() * manifold.normal, normalInB = b.rotation.transpose() * manifold.normal;
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    const ManifoldPoint& point = manifold.points[p];
+    constraints[p].gap = centres + (normalInB.dot(point.localB) - normalInA.dot(point.localA));
+  }
+}
+
 inline Vec3 SequentialImpulseSolver::relativeVelocity(const ContactManifold& manifold, const PointConstraint& c) const {
   const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
   return (b.motion.linearVelocity + b.motion.angularVelocity.cross(c.armB)) -
@@ -602,9 +616,7 @@ void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& ma
   const std::vector<std::uint32_t>& ids = work.island.manifolds;
   forEach(ids.size(), 256, [&](std::size_t i) {
     const std::uint32_t m = ids[i];
-    const ContactManifold& manifold = manifolds[m];
-    for (int p = 0; p < manifold.pointCount; ++p)
-      constraints_[m * ContactManifold::maxPoints + p].gap = separation(manifold, manifold.points[p]);
+    measureManifoldGaps(manifolds[m], &constraints_[m * ContactManifold::maxPoints]);
   });
   forEach(work.groups.size(), 64, [&](std::size_t g) { loadWideGaps(work.groups[g], constraints_); });
 }

@@ -139,6 +139,8 @@ class SequentialImpulseSolver final : public ContactSolver {
   void applyRestitution(std::vector<ContactManifold>& manifolds, const ContactIsland& island);
   double largestPenetration(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
   double separation(const ContactManifold& manifold, const ManifoldPoint& point) const;
+  // Each point's separation into constraints[p].gap (the manifold's maxPoints slots).
+  void measureManifoldGaps(const ContactManifold& manifold, PointConstraint* constraints) const;
   Vec3 relativeVelocity(const ContactManifold& manifold, const PointConstraint& constraint) const;
   double rowVelocity(const ContactManifold& manifold, const PointConstraint& constraint, const Vec3& direction,
                      int row) const;
