@@ -46,10 +46,11 @@ Eigen::Matrix4d pseudoInverse(const Eigen::Matrix4d& matrix) {
   return eigen.eigenvectors() * inverse.asDiagonal() * eigen.eigenvectors().transpose();
 }
 
-double effectiveMass(double inverseMassSum, const Mat3& inverseInertiaA, const Mat3& inverseInertiaB, const Vec3& armA,
-                     const Vec3& armB, const Vec3& direction) {
-  const Vec3 rnA = armA.cross(direction), rnB = armB.cross(direction);
-  const double k = inverseMassSum + rnA.dot(inverseInertiaA * rnA) + rnB.dot(inverseInertiaB * rnB);
+// 1 / (J M^-1 J^T) of one row, from the row's cross and turn vectors: the
+// turn is what the row's impulse does to the spin, so a locked axis (masked
+// out of the turn) adds no give, as it adds no motion.
+double rowMass(double inverseMassSum, const PointConstraint& c, int row) {
+  const double k = inverseMassSum + c.crossA[row].dot(c.turnA[row]) + c.crossB[row].dot(c.turnB[row]);
   return k > 0.0 ? 1.0 / k : 0.0;
 }
 
@@ -561,9 +562,8 @@ void SequentialImpulseSolver::prepareManifold(const std::vector<RigidBody>& bodi
     }
     c.inverseMassA = inverseMassA;
     c.inverseMassB = inverseMassB;
-    c.normalMass = effectiveMass(inverseMassSum, inverseInertiaA, inverseInertiaB, c.armA, c.armB, manifold.normal);
-    for (int t = 0; t < 2; ++t)
-      c.tangentMass[t] = effectiveMass(inverseMassSum, inverseInertiaA, inverseInertiaB, c.armA, c.armB, c.tangent[t]);
+    c.normalMass = rowMass(inverseMassSum, c, 0);
+    for (int t = 0; t < 2; ++t) c.tangentMass[t] = rowMass(inverseMassSum, c, t + 1);
     const Vec3 relative = relativeVelocity(manifold, c);
     c.approachVelocity = relative.dot(manifold.normal);
     const double slidingSpeed = (relative - c.approachVelocity * manifold.normal).norm();
