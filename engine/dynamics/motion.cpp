@@ -27,7 +27,7 @@ void integrateGyroscopic(BodyMotion& motion, const MotionProperties& properties,
   const bool free = !properties.isotropic && !anyLocked(properties.lockRotation);
   const Vec3 start = free ? Vec3(motion.orientation.conjugate() * motion.angularVelocity) : Vec3::Zero();
   const Mat3& inertia = properties.localInertia;
-  if (start.cross(inertia * start).squaredNorm() == 0.0) {
+  if (!free || start.cross(inertia * start).squaredNorm() == 0.0) {
     motion.orientationSpin = motion.angularVelocity;
     motion.spinAfterGyroscopicStep = motion.angularVelocity;
     return;
@@ -65,11 +65,12 @@ void lockVelocities(Vec3& linearVelocity, Vec3& angularVelocity, const std::arra
 }
 
 void integrateVelocity(BodyMotion& motion, const MotionProperties& properties, double h) {
+  // Without drag the division is by exactly 1: skipped, the same to the bit.
   motion.linearVelocity += properties.acceleration * h;
-  motion.linearVelocity /= 1.0 + properties.linearDrag * h;
+  if (properties.linearDrag != 0.0) motion.linearVelocity /= 1.0 + properties.linearDrag * h;
   integrateGyroscopic(motion, properties, h);
   motion.angularVelocity += properties.angularAcceleration * h;
-  motion.angularVelocity /= 1.0 + properties.angularDrag * h;
+  if (properties.angularDrag != 0.0) motion.angularVelocity /= 1.0 + properties.angularDrag * h;
   lockVelocities(motion.linearVelocity, motion.angularVelocity, properties.lockTranslation, properties.lockRotation);
 }
 
