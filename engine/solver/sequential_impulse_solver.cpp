@@ -56,23 +56,19 @@ double rowMass(double inverseMassSum, const PointConstraint& c, int row) {
 
 }  // namespace
 
-// Current gap at a manifold point, from its anchors on both bodies.
-inline double SequentialImpulseSolver::separation(const ContactManifold& manifold, const ManifoldPoint& point) const {
-  const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-  return ((b.motion.position + b.rotation * point.localB) - (a.motion.position + a.rotation * point.localA)).dot(manifold.normal);
-}
-
-// Every point's separation at once, in the normal's frame: n . (pB + RB lB -
-// pA - RA lA) = n . (pB - pA) + (RB^T n) . lB - (RA^T n) . lA, so a manifold
-// turns the normal into each body's frame once instead of each local point
-// into the world (two matrix products per manifold, not two per point).
-void SequentialImpulseSolver::measureManifoldGaps(const ContactManifold& manifold, PointConstraint* constraints) const {
+// Every point's current gap, from its anchors on both bodies, in the normal's
+// frame: n . (pB + RB lB - pA - RA lA) = n . (pB - pA) + (RB^T n) . lB -
+// (RA^T n) . lA, so a manifold turns the normal into each body's frame once
+// instead of each local point into the world (two matrix products per
+// manifold, not two per point).
+void SequentialImpulseSolver::manifoldGaps(const ContactManifold& manifold,
+                                           double (&gaps)[ContactManifold::maxPoints]) const {
   const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
   const double centres = (b.motion.position - a.motion.position).dot(manifold.normal);
   const Vec3 normalInA = a.rotation.transpose() * manifold.normal, normalInB = b.rotation.transpose() * manifold.normal;
   for (int p = 0; p < manifold.pointCount; ++p) {
     const ManifoldPoint& point = manifold.points[p];
-    constraints[p].gap = centres + (normalInB.dot(point.localB) - normalInA.dot(point.localA));
+    gaps[p] = centres + (normalInB.dot(point.localB) - normalInA.dot(point.localA));
   }
 }
 
@@ -616,7 +612,9 @@ void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& ma
   const std::vector<std::uint32_t>& ids = work.island.manifolds;
   forEach(ids.size(), 256, [&](std::size_t i) {
     const std::uint32_t m = ids[i];
-    measureManifoldGaps(manifolds[m], &constraints_[m * ContactManifold::maxPoints]);
+    double gaps[ContactManifold::maxPoints];
+    manifoldGaps(manifolds[m], gaps);
+    for (int p = 0; p < manifolds[m].pointCount; ++p) constraints_[m * ContactManifold::maxPoints + p].gap = gaps[p];
   });
   forEach(work.groups.size(), 64, [&](std::size_t g) { loadWideGaps(work.groups[g], constraints_); });
 }
@@ -797,8 +795,9 @@ double SequentialImpulseSolver::largestPenetration(const std::vector<ContactMani
                                                    const ContactIsland& island) const {
   double deepest = 0.0;
   for (std::uint32_t m : island.manifolds) {
-    for (int p = 0; p < manifolds[m].pointCount; ++p)
-      deepest = std::max(deepest, -separation(manifolds[m], manifolds[m].points[p]));
+    double gaps[ContactManifold::maxPoints];
+    manifoldGaps(manifolds[m], gaps);
+    for (int p = 0; p < manifolds[m].pointCount; ++p) deepest = std::max(deepest, -gaps[p]);
   }
   return deepest;
 }

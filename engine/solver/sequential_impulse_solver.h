@@ -93,7 +93,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   };
 
   bool restsAlone(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
-  // lone: the island takes SolverSettings' loneSubsteps and loneIterations.
+  // lone: the island starts from SolverSettings::loneSubsteps.
   SubstepContext chooseSubsteps(const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
                                 const std::vector<double>& loads, double gravity, const StepContext& step,
                                 bool lone) const;
@@ -138,9 +138,8 @@ class SequentialImpulseSolver final : public ContactSolver {
   void solve(std::vector<ContactManifold>& manifolds, IslandWork& work, bool useBias, bool reversed);
   void applyRestitution(std::vector<ContactManifold>& manifolds, const ContactIsland& island);
   double largestPenetration(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
-  double separation(const ContactManifold& manifold, const ManifoldPoint& point) const;
-  // Each point's separation into constraints[p].gap (the manifold's maxPoints slots).
-  void measureManifoldGaps(const ContactManifold& manifold, PointConstraint* constraints) const;
+  // Each point's current gap (separation) at the solver bodies' poses.
+  void manifoldGaps(const ContactManifold& manifold, double (&gaps)[ContactManifold::maxPoints]) const;
   Vec3 relativeVelocity(const ContactManifold& manifold, const PointConstraint& constraint) const;
   double rowVelocity(const ContactManifold& manifold, const PointConstraint& constraint, const Vec3& direction,
                      int row) const;
