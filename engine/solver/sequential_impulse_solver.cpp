@@ -168,7 +168,50 @@ SolverStepReport SequentialImpulseSolver::solve(std::vector<RigidBody>& bodies, 
   return report;
 }
 
+namespace {
+
+void copyImpulses(const ManifoldPoint& from, ManifoldPoint& to) {
+  to.normalImpulse = from.normalImpulse;
+  to.tangentImpulse[0] = from.tangentImpulse[0];
+  to.tangentImpulse[1] = from.tangentImpulse[1];
+}
+
+// Feature ids first; then each point left over takes the nearest unused old
+// point within `reach`. Each old point is carried at most once.
+void carryImpulses(const ContactManifold& old, ContactManifold& manifold, double reach) {
+  bool used[ContactManifold::maxPoints] = {}, carried[ContactManifold::maxPoints] = {};
+  for (int p = 0; p < manifold.pointCount; ++p)
+    for (int q = 0; q < old.pointCount; ++q) {
+      if (used[q] || old.points[q].featureId != manifold.points[p].featureId) continue;
+      copyImpulses(old.points[q], manifold.points[p]);
+      used[q] = carried[p] = true;
+      break;
+    }
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    if (carried[p]) continue;
+    int nearest = -1;
+    double best = reach * reach;
+    for (int q = 0; q < old.pointCount; ++q) {
+      const double distance = (old.points[q].localA - manifold.points[p].localA).squaredNorm();
+      if (!used[q] && distance <= best) {
+        best = distance;
+        nearest = q;
+      }
+    }
+    if (nearest < 0) continue;
+    copyImpulses(old.points[nearest], manifold.points[p]);
+    used[nearest] = true;
+  }
+}
+
+}  // namespace
+
 // Impulses of points that persist (same pair, same feature id) carry over.
+// A point whose features changed takes the impulse of the nearest old point
+// left unmatched within linearSlop in A's frame: where two equal faces meet
+// edge to edge, a sway of a micrometre moves a corner across the other face's
+// side and the clip makes a new point in the same place. Losing its impulse
+// would drop the load it held for a step and kick the stack.
 void SequentialImpulseSolver::warmStartFromPreviousStep() {
   std::size_t previous = 0;
   for (ContactManifold& manifold : manifolds_) {
@@ -179,16 +222,7 @@ void SequentialImpulseSolver::warmStartFromPreviousStep() {
     if (previous == previousManifolds_.size()) break;
     const ContactManifold& old = previousManifolds_[previous];
     if (BodyPair{old.a, old.b} != pair) continue;
-    for (int p = 0; p < manifold.pointCount; ++p) {
-      ManifoldPoint& point = manifold.points[p];
-      for (int q = 0; q < old.pointCount; ++q) {
-        if (old.points[q].featureId != point.featureId) continue;
-        point.normalImpulse = old.points[q].normalImpulse;
-        point.tangentImpulse[0] = old.points[q].tangentImpulse[0];
-        point.tangentImpulse[1] = old.points[q].tangentImpulse[1];
-        break;
-      }
-    }
+    carryImpulses(old, manifold, settings_.linearSlop);
   }
 }
 

@@ -51,7 +51,8 @@ TEST(HeavyOnLight, TenTonnesOnOneKilogramHolds) {
 }
 
 // Without the scaling the light box is crushed into the floor: the test
-// above fails with massRatioLimit 0, so it measures the mechanism.
+// above fails with massRatioLimit 0 (measured: 5.6 cm deep), so it measures
+// the mechanism.
 TEST(HeavyOnLight, WithoutScalingTheLightBoxIsCrushed) {
   World world = massStack({1.0, 10'000.0}, 0.0);
   double deepest = 0.0;
@@ -59,7 +60,7 @@ TEST(HeavyOnLight, WithoutScalingTheLightBoxIsCrushed) {
     world.step();
     for (BodyId box : {1u, 2u}) deepest = std::max(deepest, overlapBelow(world, box));
   }
-  EXPECT_GT(deepest, 0.1);
+  EXPECT_GT(deepest, 0.01);  // the limit the test above holds
 }
 
 TEST(HeavyOnLight, OneKilogramUnderAMillionNeverSinksIntoTheFloor) {
