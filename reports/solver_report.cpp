@@ -46,12 +46,12 @@ std::string number(double value) {
 constexpr int warmUpSteps = 10;
 
 // max_substeps = substeps: the resting-load stiffening cannot add substeps
-// behind the setting's back; nor may a lone body take fewer.
+// behind the setting's back; nor may a calm island take fewer.
 SolverSettings pinned(SolverSettings solver, int substeps, int iterations) {
   solver.kind = SolverKind::SequentialImpulse;
   solver.substeps = substeps;
   solver.maxSubsteps = substeps;
-  solver.loneSubsteps = substeps;
+  solver.calmSubsteps = substeps;
   solver.velocityIterations = iterations;
   return solver;
 }

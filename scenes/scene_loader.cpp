@@ -216,8 +216,8 @@ Value readChoice(const JsonReader& reader, const json& value, const std::string&
 void readSolver(const JsonReader& reader, const json& value, const std::string& path, SolverSettings& solver) {
   reader.requireObject(value, path);
   reader.checkKeys(value, path,
-                   {"kind", "iterations", "substeps", "max_substeps", "lone_substeps", "slop", "bounce_threshold",
-                    "position_correction"});
+                   {"kind", "iterations", "substeps", "max_substeps", "calm_substeps", "calm_speed", "slop",
+                    "bounce_threshold", "position_correction"});
   if (value.contains("kind"))
     solver.kind = readChoice<SolverKind>(reader, value["kind"], path + ".kind",
                                          {{solverKindName(SolverKind::Seed), SolverKind::Seed},
@@ -242,8 +242,10 @@ void readSolver(const JsonReader& reader, const json& value, const std::string& 
                   "must be at least substeps (" + std::to_string(solver.substeps) + "), got " +
                       std::to_string(solver.maxSubsteps));
   }
-  if (value.contains("lone_substeps"))
-    solver.loneSubsteps = readCount(reader, value["lone_substeps"], path + ".lone_substeps", limits::maxSubsteps);
+  if (value.contains("calm_substeps"))
+    solver.calmSubsteps = readCount(reader, value["calm_substeps"], path + ".calm_substeps", limits::maxSubsteps);
+  if (value.contains("calm_speed"))
+    solver.calmSpeed = reader.inRange(value["calm_speed"], path + ".calm_speed", 0.0, 1e3);
   const long long sweeps = static_cast<long long>(std::max(solver.substeps, solver.maxSubsteps)) *
                            solver.velocityIterations;
   if (sweeps > limits::maxSweepsPerStep)

@@ -113,7 +113,7 @@ inline void SequentialImpulseSolver::applyNormal(const ContactManifold& manifold
 // body's share of any contact reach (below) in every direction, not just
 // along its displacement, so a pair the narrow phase may keep is found by any
 // broad phase, whatever its margins: the contacts, and with them which
-// bodies rest alone (loneSubsteps), do not depend on the broad phase. Spin is
+// islands are calm (calmSubsteps), do not depend on the broad phase. Spin is
 // left to the broad phase's margin (0.1 m by default, about 6 m/s at the rim
 // at 60 Hz): a long rod spinning fast would otherwise pair with everything.
 PredictedMotion SequentialImpulseSolver::predictMotion(const RigidBody& body, const StepContext& step) const {
@@ -286,6 +286,7 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
   const std::vector<double> loads = g > 0.0 ? restingLoads(bodies, movable, manifolds, touching_, -step.gravity / g, &massScales_)
                                             : std::vector<double>(manifolds.size(), 0.0);
   lastSubstep_.resize(bodies.size(), 0.0);
+  updateCalmTimes(bodies.size(), step.dt);
   const std::vector<ContactIsland> islands = buildContactIslands(manifolds, movable);
   // Each island's substeps, and its warm start rescaled to them.
   std::vector<SubstepContext> substeps(islands.size());
@@ -293,7 +294,8 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
   forEach(islands.size(), 16, [&](std::size_t i) {
     const ContactIsland& island = islands[i];
     kinematic[i] = touchesKinematic(bodies, manifolds, island);
-    substeps[i] = chooseSubsteps(manifolds, island, loads, g, step, restsAlone(manifolds, island) && !kinematic[i]);
+    const bool calm = !kinematic[i] && (restsAlone(manifolds, island) || restsTogether(manifolds, island));
+    substeps[i] = chooseSubsteps(manifolds, island, loads, g, step, calm);
     if (!settings_.warmStarting) return;
     rescaleWarmStart(manifolds, island, movable, substeps[i].h);
     for (std::uint32_t m : island.manifolds) seedNewContact(manifolds[m], loads[m], touching_[m], g, substeps[i].h);
@@ -316,17 +318,17 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
     for (std::uint32_t id : batch.island.bodies) inIsland[id] = true;
     report.largestPenetration = std::max(report.largestPenetration, batch.largestPenetration);
   }
-  const SubstepContext calm =
+  const SubstepContext base =
       substepContext(step, std::max(settings_.substeps, 1), settings_.contactHertz, settings_.dampingRatio);
-  integrateFreeBodies(bodies, movable, inIsland, calm);
+  integrateFreeBodies(bodies, movable, inIsland, base);
   if (report.substeps == 0) {
-    report.substeps = calm.count;
-    report.contactHertz = calm.contactHertz;
+    report.substeps = base.count;
+    report.contactHertz = base.contactHertz;
   }
   return report;
 }
 
-// Bodies in no manifold take the base substeps, as a calm island would.
+// Bodies in no manifold take the base substeps: integration alone.
 void SequentialImpulseSolver::integrateFreeBodies(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                                   const std::vector<bool>& inIsland, const SubstepContext& substeps) {
   forEach(bodies.size(), 256, [&](std::size_t i) {
@@ -468,39 +470,90 @@ bool SequentialImpulseSolver::restsAlone(const std::vector<ContactManifold>& man
   return false;
 }
 
+// Every body slower than calmSpeed, spin at its rim included, and every
+// contact no deeper than twice its resting depth (the touching distance plus
+// the overlap a load may add). A body about to land, or a pile pushed apart
+// from a deep overlap, is not at rest. Nor is an island whose masses span more
+// than calmMassSpread: Gauss-Seidel hands a load between bodies at about
+// their mass ratio per pass, so a mixed pile creeps with fewer substeps.
+bool SequentialImpulseSolver::restsTogether(const std::vector<ContactManifold>& manifolds,
+                                            const ContactIsland& island) const {
+  constexpr double calmMassSpread = 10.0, calmSettling = 0.25;
+  double lightest = std::numeric_limits<double>::infinity(), heaviest = 0.0;
+  for (std::uint32_t id : island.bodies) {
+    const SolverBody& body = solverBodies_[id];
+    if (!(calmTime_[id] >= calmSettling)) return false;
+    lightest = std::min(lightest, 1.0 / body.inverseMass);
+    heaviest = std::max(heaviest, 1.0 / body.inverseMass);
+  }
+  if (!(heaviest <= calmMassSpread * lightest)) return false;
+  for (std::uint32_t m : island.manifolds) {
+    const ContactManifold& manifold = manifolds[m];
+    const double allowed = std::min(settings_.restingOverlap, settings_.relativeRestingOverlap * bodySize(manifold));
+    const double deepest = -2.0 * (touching_[m] + allowed);
+    for (int p = 0; p < manifold.pointCount; ++p)
+      if (!(manifold.points[p].separation >= deepest)) return false;
+  }
+  return true;
+}
+
+// A body in contact that begins a step slower than calmSpeed, its spin's
+// rim speed included, adds the step to its calm time; any other starts again.
+void SequentialImpulseSolver::updateCalmTimes(std::size_t bodyCount, double dt) {
+  calmTime_.resize(bodyCount, 0.0);
+  for (std::size_t id = 0; id < bodyCount; ++id) {
+    if (!listed_[id]) {
+      calmTime_[id] = 0.0;
+      continue;
+    }
+    const SolverBody& body = solverBodies_[id];
+    const double speed = body.motion.linearVelocity.norm() + body.motion.angularVelocity.norm() * body.size;
+    calmTime_[id] = speed <= settings_.calmSpeed ? calmTime_[id] + dt : 0.0;
+  }
+}
+
 // The contact frequency is the settings' unless the most loaded touching
 // point would then settle deeper than restingOverlap; substeps follow the
 // frequency, since a soft contact stiffer than a quarter of the substep rate
 // rings. Past maxSubsteps the frequency is capped and the overlap grows.
-// An island of one movable body resting on something starts from loneSubsteps.
+// A calm island starts from calmSubsteps, unless it had to be stiffened: a
+// heavy load carried down a chain of contacts needs the full substeps.
 SubstepContext SequentialImpulseSolver::chooseSubsteps(const std::vector<ContactManifold>& manifolds,
                                                        const ContactIsland& island, const std::vector<double>& loads,
-                                                       double gravity, const StepContext& step, bool lone) const {
+                                                       double gravity, const StepContext& step, bool calm) const {
   const SolverSettings& settings = settings_;
   const double dt = step.dt;
-  const int fewest = std::max(lone ? std::min(settings.loneSubsteps, settings.substeps) : settings.substeps, 1);
-  const int most = std::max(settings.maxSubsteps, fewest);
+  const int full = std::max(settings.substeps, 1);
+  const int most = std::max(settings.maxSubsteps, full);
   double hertz = settings.contactHertz;
-  if (hertz > 0.0 && settings.restingOverlap > 0.0 && most > fewest) {
-    // Largest (supported mass / effective mass) / allowed overlap, per point.
-    double demand = 0.0;
-    for (std::uint32_t m : island.manifolds) {
-      if (loads[m] == 0.0) continue;
-      const int touching = touchingPoints(manifolds[m], touching_[m]);
-      if (touching == 0) continue;
-      const double allowed =
-          std::min(settings.restingOverlap, settings.relativeRestingOverlap * bodySize(manifolds[m]));
-      for (int p = 0; p < manifolds[m].pointCount; ++p) {
-        const double mass = constraints_[m * ContactManifold::maxPoints + p].normalMass;
-        if (mass > 0.0) demand = std::max(demand, loads[m] / touching / mass / allowed);
-      }
-    }
-    hertz = std::max(hertz, std::sqrt(demand * gravity) / (2.0 * std::numbers::pi));
-  }
+  if (hertz > 0.0 && settings.restingOverlap > 0.0 && most > full)
+    hertz = std::max(hertz, loadedHertz(manifolds, island, loads, gravity));
+  const bool stiffened = hertz > settings.contactHertz;
+  const int fewest = calm && !stiffened ? std::clamp(settings.calmSubsteps, 1, full) : full;
   // Substeps that make `hertz` a quarter of the substep rate, within bounds.
   const double wanted = std::ceil(4.0 * hertz * dt - 1e-9);
   const int substeps = static_cast<int>(std::clamp(wanted, static_cast<double>(fewest), static_cast<double>(most)));
   return substepContext(step, substeps, std::min(hertz, 0.25 * substeps / dt), settings.dampingRatio);
+}
+
+// The frequency at which the island's most demanding touching point, by
+// (supported mass / effective mass) / allowed overlap, settles at its allowed
+// overlap under gravity.
+double SequentialImpulseSolver::loadedHertz(const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
+                                            const std::vector<double>& loads, double gravity) const {
+  double demand = 0.0;
+  for (std::uint32_t m : island.manifolds) {
+    if (loads[m] == 0.0) continue;
+    const int touching = touchingPoints(manifolds[m], touching_[m]);
+    if (touching == 0) continue;
+    const double allowed =
+        std::min(settings_.restingOverlap, settings_.relativeRestingOverlap * bodySize(manifolds[m]));
+    for (int p = 0; p < manifolds[m].pointCount; ++p) {
+      const double mass = constraints_[m * ContactManifold::maxPoints + p].normalMass;
+      if (mass > 0.0) demand = std::max(demand, loads[m] / touching / mass / allowed);
+    }
+  }
+  return std::sqrt(demand * gravity) / (2.0 * std::numbers::pi);
 }
 
 // The middle of a body's three extents: a cube's edge, a plate's width, a

@@ -92,11 +92,16 @@ class SequentialImpulseSolver final : public ContactSolver {
     double largestPenetration = 0.0;
   };
 
+  // The two ways an island is calm (SolverSettings::calmSubsteps).
   bool restsAlone(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
-  // lone: the island starts from SolverSettings::loneSubsteps.
+  bool restsTogether(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
+  void updateCalmTimes(std::size_t bodyCount, double dt);
+  // calm: the island starts from SolverSettings::calmSubsteps.
   SubstepContext chooseSubsteps(const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
                                 const std::vector<double>& loads, double gravity, const StepContext& step,
-                                bool lone) const;
+                                bool calm) const;
+  double loadedHertz(const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
+                     const std::vector<double>& loads, double gravity) const;
   double bodySize(const ContactManifold& manifold) const;
   void rescaleWarmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
                         const std::vector<bool>& movable, double substep) const;
@@ -165,6 +170,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   std::vector<Eigen::Matrix4d> approachMass_;     // per manifold, where approaching_: normal rows' J M^-1 J^T
   std::vector<Eigen::Matrix4d> approachInverse_;  // and its pseudo-inverse
   std::vector<double> lastSubstep_;               // per body: the substep it took last step (0: none yet)
+  std::vector<double> calmTime_;                  // per body: s it has begun steps in contact and calm
   std::vector<std::pair<double, double>> massScales_;  // per manifold, from supportMassScales
   const TaskSystem* tasks_ = nullptr;  // this step's threads (StepContext::tasks)
 };

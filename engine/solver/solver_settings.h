@@ -51,13 +51,19 @@ struct SolverSettings {
   // converge much better than iterations for stacks (Catto, "Solver2D").
   int substeps = 8;
   int velocityIterations = 2;
-  // An island of one movable body resting on something immovable (a box
-  // alone on the floor, a ball rolling on a ramp) has no chain of contacts
-  // for many substeps to carry a load along, so it takes at most
-  // loneSubsteps (Box2D v3's 4): half the sweeps. Stacks, piles and bodies in
-  // flight keep `substeps`; the resting-load stiffening still adds more.
-  // loneSubsteps = substeps turns this off.
-  int loneSubsteps = 4;
+  // A calm island takes at most calmSubsteps (Box2D v3's 4): half the
+  // sweeps. Calm is a body resting alone on something immovable (a box on the
+  // floor, a ball rolling down a ramp: no chain of contacts for many substeps
+  // to carry a load along), or an island at rest: every body has begun the
+  // last quarter second of steps in contact and slower than calmSpeed (m/s,
+  // its spin's rim speed included), the masses span at most a factor of 10,
+  // and no contact is deeper than twice what a resting contact settles at. A
+  // stack at rest needs many substeps only to carry its weight down, and warm
+  // starting already carries that from step to step. Bodies landing, sliding,
+  // settling or pushed apart keep `substeps`, as do islands the resting-load
+  // stiffening below has to stiffen. calmSubsteps = substeps turns this off.
+  int calmSubsteps = 4;
+  double calmSpeed = 0.1;
   bool warmStarting = true;
   // Solve each colour's manifolds simd::width at a time in SIMD lanes
   // (wide_contact_rows.h); off, one by one in the same order. Same answer up

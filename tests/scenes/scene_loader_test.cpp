@@ -228,8 +228,12 @@ TEST(SceneLoader, CapsuleConvexAndWorldKeys) {
   EXPECT_EQ(seed.world.solver.velocityIterations, 3);
   EXPECT_EQ(seed.world.solver.substeps, 8);
   EXPECT_EQ(seed.world.solver.maxSubsteps, 8);
-  EXPECT_EQ(seed.world.solver.loneSubsteps, 4);  // the default
-  EXPECT_EQ(parseScene(R"({"solver": {"lone_substeps": 8}, "bodies": []})", "l.json").world.solver.loneSubsteps, 8);
+  EXPECT_EQ(seed.world.solver.calmSubsteps, 4);  // the defaults
+  EXPECT_EQ(seed.world.solver.calmSpeed, 0.1);
+  const SceneDescription calm =
+      parseScene(R"({"solver": {"calm_substeps": 8, "calm_speed": 0.5}, "bodies": []})", "c.json");
+  EXPECT_EQ(calm.world.solver.calmSubsteps, 8);
+  EXPECT_EQ(calm.world.solver.calmSpeed, 0.5);
   EXPECT_EQ(seed.world.solver.restitutionCombine(), CombineRule::Average);  // the design's (Unity's) default
   EXPECT_EQ(scene.world.solver.restitutionCombine(), CombineRule::Maximum);
   EXPECT_EQ(scene.world.solver.frictionCombine(), CombineRule::GeometricMean);
@@ -293,9 +297,12 @@ TEST(SceneLoader, RejectsBadCapsulesHullsAndWorldKeys) {
   EXPECT_NE(message(R"({"solver": {"kind": "pgs"}, "bodies": []})").find("solver.kind"), std::string::npos);
   EXPECT_NE(message(R"({"solver": {"iterations": 0}, "bodies": []})").find("solver.iterations"), std::string::npos);
   EXPECT_NE(message(R"({"solver": {"warm": true}, "bodies": []})").find("solver.warm"), std::string::npos);
-  EXPECT_NE(message(R"({"solver": {"lone_substeps": 0}, "bodies": []})").find("solver.lone_substeps"),
+  EXPECT_NE(message(R"({"solver": {"calm_substeps": 0}, "bodies": []})").find("solver.calm_substeps"),
             std::string::npos);
-  EXPECT_NE(message(R"({"solver": {"lone_substeps": 1001}, "bodies": []})").find("solver.lone_substeps"),
+  EXPECT_NE(message(R"({"solver": {"calm_substeps": 1001}, "bodies": []})").find("solver.calm_substeps"),
+            std::string::npos);
+  EXPECT_NE(message(R"({"solver": {"calm_speed": -1}, "bodies": []})").find("solver.calm_speed"), std::string::npos);
+  EXPECT_NE(message(R"({"solver": {"lone_substeps": 4}, "bodies": []})").find("solver.lone_substeps"),
             std::string::npos);
   EXPECT_NE(message(R"({"solver": {"substeps": 8, "max_substeps": 4}, "bodies": []})")
                 .find("solver.max_substeps: must be at least substeps (8), got 4"),

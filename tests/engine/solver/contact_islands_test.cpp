@@ -50,7 +50,8 @@ TEST(ContactIslands, AChainJoinsOneIslandWhateverTheManifoldOrder) {
 
 // The same 3-box stack, alone and beside a 0.1 / 10 / 0.1 / 10 kg stack
 // (whose bottom box carries 20 kg, so its island takes 12 substeps): its
-// boxes follow bit-identical paths, at 8 substeps.
+// boxes follow bit-identical paths, at 8 substeps and then, at rest, the
+// calm ones.
 TEST(ContactIslands, AStackMovesTheSameWhateverElseIsInTheWorld) {
   SceneDescription alone = massStackScene({1.0, 1.0, 1.0});
   SceneDescription shared = alone;
@@ -67,8 +68,9 @@ TEST(ContactIslands, AStackMovesTheSameWhateverElseIsInTheWorld) {
     first.step();
     second.step();
     most = std::max(most, second.lastStepStats().substeps);
-    EXPECT_EQ(first.lastStepStats().substeps, 8);
+    EXPECT_LE(first.lastStepStats().substeps, 8);
   }
+  EXPECT_EQ(first.lastStepStats().substeps, SolverSettings{}.calmSubsteps);
   EXPECT_GT(most, 8);
   for (BodyId id = 1; id <= 3; ++id) {
     EXPECT_EQ(first.body(id).position(), second.body(id).position()) << "body " << id;
