@@ -106,17 +106,17 @@ int reportStages(const Arguments& parsed) {
   const auto directory = outputDirectory(parsed);
   const int steps = parsed.has("--quick") ? 10 : 120;
   std::string table =
-      "| scene | steps | candidate pairs | narrow pairs | closed form | box-box | GJK | EPA | manifolds | locked bodies "
-      "| layers | primitives |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+      "| scene | steps | candidate pairs | narrow pairs | closed form | box-box | GJK | EPA | taken again | manifolds "
+      "| locked bodies | layers | primitives |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const char* name : {"balls48", "stack", "pyramid"}) {
     for (const char* layers : {"", "shapes,contacts,aabbs"}) {
       const auto c = reports::countStages(resolveScene(name), steps, layers);
       char row[400];
-      std::snprintf(row, sizeof row, "| %s | %d | %lld | %lld | %lld | %lld | %lld | %lld | %lld | %d | %s | %lld |\n",
+      std::snprintf(row, sizeof row,
+                    "| %s | %d | %lld | %lld | %lld | %lld | %lld | %lld | %lld | %lld | %d | %s | %lld |\n",
                     c.scene.c_str(), c.steps, c.candidatePairs, c.narrowPairs, c.fastPath, c.boxBox, c.gjk, c.epa,
-                    c.manifolds,
-                    c.bodiesWithLocks, c.layersRequested.empty() ? "none" : c.layersRequested.c_str(),
-                    c.primitivesEmitted);
+                    c.reused, c.manifolds, c.bodiesWithLocks,
+                    c.layersRequested.empty() ? "none" : c.layersRequested.c_str(), c.primitivesEmitted);
       table += row;
     }
   }

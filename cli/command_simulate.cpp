@@ -134,11 +134,13 @@ int runSimulate(const std::vector<std::string>& args) {
   std::printf("step time %.4f ms (mean) on %d thread%s, final kinetic energy %.6g J\n", 1e3 * stepSeconds / steps,
               world.threadCount(), world.threadCount() == 1 ? "" : "s", kineticEnergy);
   const StepStats& stats = world.lastStepStats();
-  std::printf("last step: %d awake (%d with axis locks), %d sleeping, %d candidate pairs, %d contacts, %d manifold "
-              "points, largest penetration %.4g m; narrow phase: %lld fast path, %lld box-box, %lld GJK, %lld EPA\n",
-              stats.awakeBodies, stats.lockedBodies, stats.sleepingBodies, stats.candidatePairs, stats.contacts,
-              stats.manifoldPoints, stats.largestPenetration, stats.narrowPhase.fastPath, stats.narrowPhase.boxBox,
-              stats.narrowPhase.gjk, stats.narrowPhase.epa);
+  std::printf(
+      "last step: %d awake (%d with axis locks), %d sleeping, %d candidate pairs, %d contacts, %d manifold "
+      "points, largest penetration %.4g m; narrow phase: %lld fast path, %lld box-box, %lld GJK, %lld EPA, "
+      "%lld taken again\n",
+      stats.awakeBodies, stats.lockedBodies, stats.sleepingBodies, stats.candidatePairs, stats.contacts,
+      stats.manifoldPoints, stats.largestPenetration, stats.narrowPhase.fastPath, stats.narrowPhase.boxBox,
+      stats.narrowPhase.gjk, stats.narrowPhase.epa, stats.narrowPhase.reused);
   if (stats.substeps > 0)
     std::printf("solver: %d substeps, contacts at %.4g Hz\n", stats.substeps, stats.contactHertz);
   if (const auto* gpu = dynamic_cast<const gpu::GpuCollision*>(offload.get())) {

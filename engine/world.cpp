@@ -252,6 +252,14 @@ World::PairTest World::testPair(const BodyPair& pair, const StepContext& context
     test.offloaded = true;
     return test;
   }
+  if (reusesContacts()) {
+    const ReusableContact* kept = findKept(kept_, pair);
+    if (kept && stillHolds(*kept, a.transform(), b.transform(), ContactReuseTolerance{}) &&
+        carryResult(*kept, a.transform(), b.transform(), test.result)) {
+      test.kept = kept;
+      return test;
+    }
+  }
   test.result = collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase);
   // The design's brute force ran the narrow phase for B-A too; it responded
   // once per pair, so that second answer is only counted (gatherContacts).
@@ -280,8 +288,14 @@ void World::measureBodies(const StepContext& context) {
 void World::testPairs(const StepContext& context) {
   measureBodies(context);
   pairTests_.resize(pairs_.size());
+  carriedManifolds_.resize(pairs_.size());
   tasks_->parallelFor(pairs_.size(), pairGrain, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) pairTests_[i] = testPair(pairs_[i], context);
+    for (std::size_t i = begin; i < end; ++i) {
+      pairTests_[i] = testPair(pairs_[i], context);
+      if (const ReusableContact* kept = pairTests_[i].kept)
+        carryManifold(*kept, bodies_[kept->pair.a].transform(), bodies_[kept->pair.b].transform(),
+                      carriedManifolds_[i]);
+    }
   });
   if (offload_) testOffloadedPairs();
 }
@@ -309,6 +323,7 @@ void World::gatherContacts(const StepContext& context) {
   candidates_.clear();
   reaches_.clear();
   prebuilt_.clear();
+  candidateKept_.clear();
   std::size_t offloadedSoFar = 0;
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
     const PairTest& test = pairTests_[i];
@@ -318,15 +333,54 @@ void World::gatherContacts(const StepContext& context) {
       continue;
     }
     const Contact contact{pairs_[i].a, pairs_[i].b, test.result};
-    stats_.narrowPhase.add(contact.result);
+    if (test.kept)
+      stats_.narrowPhase.addReused();
+    else
+      stats_.narrowPhase.add(contact.result);
     if (settings_.bruteForceBothOrders) stats_.narrowPhase.add(test.reversed);
     candidates_.push_back(contact);
     reaches_.push_back(test.reach);
-    if (offload_) prebuilt_.push_back(test.offloaded ? &offloaded_[offloadedSoFar++].manifold : nullptr);
+    candidateKept_.push_back(test.kept);
+    if (test.offloaded)
+      prebuilt_.push_back(&offloaded_[offloadedSoFar++].manifold);
+    else
+      prebuilt_.push_back(test.kept ? &carriedManifolds_[i] : nullptr);
     if (contact.result.status == ContactStatus::Separated && contact.result.distance > touchingGap) continue;
     contacts_.push_back(contact);
   }
   stats_.manifoldPoints += solver_->addCandidates(candidates_, reaches_, bodies_, context, prebuilt_);
+  keepAnswers();
+}
+
+// The answers worth taking again next pass: this pass's manifolds (in pair
+// order, as the candidates) whose pair was tested anew with the box-box or
+// GJK/EPA route, at today's poses; those taken again keep their old poses.
+void World::keepAnswers() {
+  nextKept_.clear();
+  if (!reusesContacts()) return;
+  std::size_t candidate = 0;
+  for (const ContactManifold& manifold : solver_->manifolds()) {
+    while (candidate < candidates_.size() &&
+           (candidates_[candidate].a != manifold.a || candidates_[candidate].b != manifold.b))
+      ++candidate;
+    if (candidate == candidates_.size()) break;
+    if (const ReusableContact* kept = candidateKept_[candidate]) {
+      nextKept_.push_back(*kept);
+      continue;
+    }
+    if (prebuilt_[candidate] || !worthReusing(candidates_[candidate].result)) continue;
+    ReusableContact& entry = nextKept_.emplace_back();
+    entry.pair = {manifold.a, manifold.b};
+    entry.a = bodies_[manifold.a].transform();
+    entry.b = bodies_[manifold.b].transform();
+    entry.result = candidates_[candidate].result;
+    entry.manifold = manifold;
+    for (int p = 0; p < manifold.pointCount; ++p) {
+      ManifoldPoint& point = entry.manifold.points[p];
+      point.normalImpulse = point.tangentImpulse[0] = point.tangentImpulse[1] = point.stepNormalImpulse = 0.0;
+    }
+  }
+  kept_.swap(nextKept_);
 }
 
 // The design's baseline without static-pair skipping: pairs of bodies that

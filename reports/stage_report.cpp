@@ -20,6 +20,7 @@ StageCounters countStages(const SceneDescription& scene, int steps, const std::s
     counters.boxBox += stats.narrowPhase.boxBox;
     counters.gjk += stats.narrowPhase.gjk;
     counters.epa += stats.narrowPhase.epa;
+    counters.reused += stats.narrowPhase.reused;
     counters.manifolds += stats.manifolds;
     counters.manifoldPoints += stats.manifoldPoints;
     counters.staticPairsTested += stats.staticPairsTested;

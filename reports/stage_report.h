@@ -12,7 +12,7 @@ namespace physdbg::reports {
 struct StageCounters {
   std::string scene;
   int steps = 0;
-  long long candidatePairs = 0, narrowPairs = 0, fastPath = 0, boxBox = 0, gjk = 0, epa = 0;
+  long long candidatePairs = 0, narrowPairs = 0, fastPath = 0, boxBox = 0, gjk = 0, epa = 0, reused = 0;
   long long manifolds = 0, manifoldPoints = 0, staticPairsTested = 0;
   int bodiesWithLocks = 0;
   std::string layersRequested;  // empty: none

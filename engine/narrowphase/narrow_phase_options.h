@@ -32,6 +32,7 @@ struct NarrowPhaseCounters {
   long long gjk = 0;
   long long epa = 0;
   long long boxBox = 0;  // box pairs the separating-axis test ran on (some then also ran GJK)
+  long long reused = 0;  // pairs that took their last answer again (contact_reuse.h), no test run
 
   void add(const ContactResult& result) {
     ++pairs;
@@ -39,6 +40,10 @@ struct NarrowPhaseCounters {
     if (result.usedBoxBox) ++boxBox;
     if (result.gjkIterations > 0) ++gjk;
     if (result.epaIterations > 0) ++epa;
+  }
+  void addReused() {
+    ++pairs;
+    ++reused;
   }
 };
 

@@ -1,0 +1,68 @@
+#include "engine/contacts/contact_reuse.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace physdbg {
+namespace {
+
+// Both within the tolerance: |q . q0| >= cos(angle / 2) is the rotation
+// between them being at most `angle`.
+bool near(const Transform& now, const Transform& then, const ContactReuseTolerance& tolerance) {
+  if ((now.position - then.position).squaredNorm() > tolerance.distance * tolerance.distance) return false;
+  return std::abs(now.rotation.coeffs().dot(then.rotation.coeffs())) >= std::cos(0.5 * tolerance.angle);
+}
+
+// A point fixed to a body that moved from `then` to `now`.
+Vec3 carried(const Vec3& point, const Transform& then, const Transform& now) {
+  return now.apply(then.applyInverse(point));
+}
+
+}  // namespace
+
+bool worthReusing(const ContactResult& result) { return result.usedBoxBox || result.usedGeneralPath; }
+
+bool stillHolds(const ReusableContact& kept, const Transform& a, const Transform& b,
+                const ContactReuseTolerance& tolerance) {
+  return near(a, kept.a, tolerance) && near(b, kept.b, tolerance);
+}
+
+bool carryResult(const ReusableContact& kept, const Transform& a, const Transform& b, ContactResult& result) {
+  result = kept.result;
+  result.normal = (a.rotation * kept.a.rotation.conjugate() * kept.result.normal).normalized();
+  result.pointA = carried(kept.result.pointA, kept.a, a);
+  result.pointB = carried(kept.result.pointB, kept.b, b);
+  result.gjkIterations = result.epaIterations = 0;
+  const double gap = result.normal.dot(result.pointB - result.pointA);
+  switch (kept.result.status) {
+    case ContactStatus::Separated:
+      result.distance = gap;
+      return gap > 0.0;
+    case ContactStatus::Penetrating:
+      result.depth = -gap;
+      return gap < 0.0;
+    case ContactStatus::Touching:
+      return true;
+  }
+  return false;
+}
+
+void carryManifold(const ReusableContact& kept, const Transform& a, const Transform& b, ContactManifold& manifold) {
+  manifold = kept.manifold;
+  manifold.normal = (a.rotation * kept.a.rotation.conjugate() * kept.manifold.normal).normalized();
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    ManifoldPoint& point = manifold.points[p];
+    point.pointA = a.apply(point.localA);
+    point.pointB = b.apply(point.localB);
+    point.separation = manifold.normal.dot(point.pointB - point.pointA);
+  }
+}
+
+const ReusableContact* findKept(const std::vector<ReusableContact>& kept, const BodyPair& pair) {
+  const auto found =
+      std::lower_bound(kept.begin(), kept.end(), pair,
+                       [](const ReusableContact& entry, const BodyPair& key) { return entry.pair < key; });
+  return found != kept.end() && found->pair == pair ? &*found : nullptr;
+}
+
+}  // namespace physdbg

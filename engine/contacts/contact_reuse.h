@@ -1,0 +1,54 @@
+#pragma once
+// Resting pairs barely move from one step to the next: a column of boxes
+// settled on a floor shifts by micrometres. Their separating-axis test, face
+// clipping and point reduction would give the same answer again, so a pair
+// whose two bodies have both stayed within a tight tolerance of where they
+// were when the pair was last computed takes that answer, carried along with
+// each body: points move with their own body and the normal with body A, and
+// every distance is measured anew at the current poses. Only the box-box and
+// GJK/EPA answers are kept: the analytic ones (spheres) cost less than the
+// check.
+#include <vector>
+
+#include "engine/broadphase/broad_phase.h"
+#include "engine/contacts/contact.h"
+#include "engine/contacts/contact_manifold.h"
+#include "engine/math.h"
+
+namespace physdbg {
+
+// How far a body may have moved since its pair was computed for the answer
+// to be taken again. A tenth of a millimetre and 2e-4 rad (a tenth of a
+// millimetre at half a metre from the centre): far below the 5 mm slop within
+// which contacts are found and the tolerances of the tests that check them.
+struct ContactReuseTolerance {
+  double distance = 1e-4;  // m
+  double angle = 2e-4;     // rad
+};
+
+// One pair's answer as computed, with the poses it was computed at.
+struct ReusableContact {
+  BodyPair pair{0, 0};
+  Transform a, b;
+  ContactResult result;
+  ContactManifold manifold;  // geometry only: impulses are the solver's
+};
+
+// Whether an answer of this kind is worth keeping (box-box or GJK/EPA).
+bool worthReusing(const ContactResult& result);
+
+// Whether both bodies are still within `tolerance` of the poses the answer
+// was computed at.
+bool stillHolds(const ReusableContact& kept, const Transform& a, const Transform& b,
+                const ContactReuseTolerance& tolerance);
+
+// The kept answer at the current poses: false when its distance changed sign
+// (a separated pair now touching, a penetrating one now apart), which only a
+// new test may say.
+bool carryResult(const ReusableContact& kept, const Transform& a, const Transform& b, ContactResult& result);
+void carryManifold(const ReusableContact& kept, const Transform& a, const Transform& b, ContactManifold& manifold);
+
+// The answer for `pair` among `kept` (sorted by pair), or null.
+const ReusableContact* findKept(const std::vector<ReusableContact>& kept, const BodyPair& pair);
+
+}  // namespace physdbg
