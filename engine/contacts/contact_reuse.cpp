@@ -18,6 +18,11 @@ Vec3 carried(const Vec3& point, const Transform& then, const Transform& now) {
   return now.apply(then.applyInverse(point));
 }
 
+// The normal turns with body A.
+Vec3 carriedNormal(const Vec3& normal, const Transform& then, const Transform& now) {
+  return (now.rotation * then.rotation.conjugate() * normal).normalized();
+}
+
 }  // namespace
 
 bool worthReusing(const ContactResult& result) { return result.usedBoxBox || result.usedGeneralPath; }
@@ -29,7 +34,7 @@ bool stillHolds(const ReusableContact& kept, const Transform& a, const Transform
 
 bool carryResult(const ReusableContact& kept, const Transform& a, const Transform& b, ContactResult& result) {
   result = kept.result;
-  result.normal = (a.rotation * kept.a.rotation.conjugate() * kept.result.normal).normalized();
+  result.normal = carriedNormal(kept.result.normal, kept.a, a);
   result.pointA = carried(kept.result.pointA, kept.a, a);
   result.pointB = carried(kept.result.pointB, kept.b, b);
   result.gjkIterations = result.epaIterations = 0;
@@ -49,7 +54,7 @@ bool carryResult(const ReusableContact& kept, const Transform& a, const Transfor
 
 void carryManifold(const ReusableContact& kept, const Transform& a, const Transform& b, ContactManifold& manifold) {
   manifold = kept.manifold;
-  manifold.normal = (a.rotation * kept.a.rotation.conjugate() * kept.manifold.normal).normalized();
+  manifold.normal = carriedNormal(kept.manifold.normal, kept.a, a);
   for (int p = 0; p < manifold.pointCount; ++p) {
     ManifoldPoint& point = manifold.points[p];
     point.pointA = a.apply(point.localA);

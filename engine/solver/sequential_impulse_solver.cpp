@@ -170,6 +170,13 @@ SolverStepReport SequentialImpulseSolver::solve(std::vector<RigidBody>& bodies, 
 
 namespace {
 
+// The overlap a resting load may add to a contact between bodies of this
+// size (the smaller movable one's): restingOverlap, or a share of the size
+// for bodies smaller than restingOverlap / relativeRestingOverlap.
+double allowedOverlap(const SolverSettings& settings, double size) {
+  return std::min(settings.restingOverlap, settings.relativeRestingOverlap * size);
+}
+
 void copyImpulses(const ManifoldPoint& from, ManifoldPoint& to) {
   to.normalImpulse = from.normalImpulse;
   to.tangentImpulse[0] = from.tangentImpulse[0];
@@ -470,9 +477,9 @@ bool SequentialImpulseSolver::restsAlone(const std::vector<ContactManifold>& man
   return false;
 }
 
-// Every body slower than calmSpeed, spin at its rim included, and every
-// contact no deeper than twice its resting depth (the touching distance plus
-// the overlap a load may add). A body about to land, or a pile pushed apart
+// Every body calm for calmSettling (updateCalmTimes), and every contact no
+// deeper than twice its resting depth (the touching distance plus the overlap
+// a load may add). A body about to land, or a pile pushed apart
 // from a deep overlap, is not at rest. Nor is an island whose masses span more
 // than calmMassSpread: Gauss-Seidel hands a load between bodies at about
 // their mass ratio per pass, so a mixed pile creeps with fewer substeps.
@@ -489,8 +496,7 @@ bool SequentialImpulseSolver::restsTogether(const std::vector<ContactManifold>& 
   if (!(heaviest <= calmMassSpread * lightest)) return false;
   for (std::uint32_t m : island.manifolds) {
     const ContactManifold& manifold = manifolds[m];
-    const double allowed = std::min(settings_.restingOverlap, settings_.relativeRestingOverlap * bodySize(manifold));
-    const double deepest = -2.0 * (touching_[m] + allowed);
+    const double deepest = -2.0 * (touching_[m] + allowedOverlap(settings_, bodySize(manifold)));
     for (int p = 0; p < manifold.pointCount; ++p)
       if (!(manifold.points[p].separation >= deepest)) return false;
   }
@@ -546,8 +552,7 @@ double SequentialImpulseSolver::loadedHertz(const std::vector<ContactManifold>& 
     if (loads[m] == 0.0) continue;
     const int touching = touchingPoints(manifolds[m], touching_[m]);
     if (touching == 0) continue;
-    const double allowed =
-        std::min(settings_.restingOverlap, settings_.relativeRestingOverlap * bodySize(manifolds[m]));
+    const double allowed = allowedOverlap(settings_, bodySize(manifolds[m]));
     for (int p = 0; p < manifolds[m].pointCount; ++p) {
       const double mass = constraints_[m * ContactManifold::maxPoints + p].normalMass;
       if (mass > 0.0) demand = std::max(demand, loads[m] / touching / mass / allowed);
