@@ -543,22 +543,40 @@ SubstepContext SequentialImpulseSolver::chooseSubsteps(const std::vector<Contact
 }
 
 // The frequency at which the island's most demanding touching point, by
-// (supported mass / effective mass) / allowed overlap, settles at its allowed
-// overlap under gravity.
+// (force / effective mass) / allowed overlap, settles at its allowed overlap.
+// The force is a point's share of what its manifold holds: the weight it
+// holds up (restingLoads), or for a manifold that holds none up, what it
+// carried last step (carriedForce). The second sees a light body squeezed
+// sideways, say between a heavy pile and a wall; weights are steadier than
+// last step's impulses, so they decide wherever they can.
 double SequentialImpulseSolver::loadedHertz(const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
                                             const std::vector<double>& loads, double gravity) const {
   double demand = 0.0;
   for (std::uint32_t m : island.manifolds) {
-    if (loads[m] == 0.0) continue;
-    const int touching = touchingPoints(manifolds[m], touching_[m]);
+    const ContactManifold& manifold = manifolds[m];
+    const int touching = touchingPoints(manifold, touching_[m]);
     if (touching == 0) continue;
-    const double allowed = allowedOverlap(settings_, bodySize(manifolds[m]));
-    for (int p = 0; p < manifolds[m].pointCount; ++p) {
+    const double force = (loads[m] > 0.0 ? loads[m] * gravity : carriedForce(manifold)) / touching;
+    if (!(force > 0.0)) continue;
+    const double allowed = allowedOverlap(settings_, bodySize(manifold));
+    for (int p = 0; p < manifold.pointCount; ++p) {
       const double mass = constraints_[m * ContactManifold::maxPoints + p].normalMass;
-      if (mass > 0.0) demand = std::max(demand, loads[m] / touching / mass / allowed);
+      if (mass > 0.0) demand = std::max(demand, force / mass / allowed);
     }
   }
-  return std::sqrt(demand * gravity) / (2.0 * std::numbers::pi);
+  return std::sqrt(demand) / (2.0 * std::numbers::pi);
+}
+
+// The force (N) a manifold held through last step's final substep: the
+// impulses it carries into this step over that substep's length. An impact's
+// impulse counts too, for the one step after it: a body that lands hard on a
+// light one gets the stiffer contact it needs at once.
+double SequentialImpulseSolver::carriedForce(const ContactManifold& manifold) const {
+  double previous = 0.0, impulse = 0.0;
+  for (std::uint32_t id : {manifold.a, manifold.b})
+    if (solverBodies_[id].movable) previous = std::max(previous, lastSubstep_[id]);
+  for (int p = 0; p < manifold.pointCount; ++p) impulse += manifold.points[p].normalImpulse;
+  return previous > 0.0 ? impulse / previous : 0.0;
 }
 
 // The middle of a body's three extents: a cube's edge, a plate's width, a

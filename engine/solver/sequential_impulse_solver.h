@@ -10,7 +10,8 @@
 //
 // Mass ratios: a soft contact's stiffness follows its effective mass, so a
 // light body under a heavy one would sink far (resting_load.h). Each step
-// finds the weight every contact holds, stiffens the contacts (and takes
+// finds the weight every contact holds (for one that holds none up, the force
+// it carried last step), stiffens the contacts (and takes
 // more substeps) until the most loaded one settles within restingOverlap,
 // and starts new contacts at their load. This is decided per island
 // (contact_islands.h), so only the pile that needs it pays for it.
@@ -102,6 +103,7 @@ class SequentialImpulseSolver final : public ContactSolver {
                                 bool calm) const;
   double loadedHertz(const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
                      const std::vector<double>& loads, double gravity) const;
+  double carriedForce(const ContactManifold& manifold) const;
   double bodySize(const ContactManifold& manifold) const;
   void rescaleWarmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
                         const std::vector<bool>& movable, double substep) const;

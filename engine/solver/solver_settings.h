@@ -77,7 +77,8 @@ struct SolverSettings {
   double dampingRatio = 5.0;
   double maxPushSpeed = 3.0;  // m/s
   // A soft contact under load settles at (load / effective mass) g / omega^2
-  // (resting_load.h). When a contact would settle deeper than restingOverlap
+  // (resting_load.h; a contact that holds no weight up counts the force it
+  // carried last step). When a contact would settle deeper than restingOverlap
   // (m), or than relativeRestingOverlap times the size of the smaller body
   // (the middle of its three extents), the step raises the contact frequency
   // to match and takes the substeps that frequency needs (a quarter of the
@@ -93,7 +94,8 @@ struct SolverSettings {
   // Heavy on light: Gauss-Seidel hands a load down a chain of contacts at
   // about (light / heavy) per pass, so a body far heavier than the one it
   // rests on crushes it into the floor. Where a body rests on one more than
-  // this many times lighter (nearer the ground by contacts), that contact
+  // this many times lighter (nearer the ground by contacts, or as near and
+  // lighter: a light box a heavy one presses into a wall), that contact
   // treats the lower body as only this many times lighter (mass scaling, as
   // in shock propagation): the stack holds, the lower body feels less of the
   // weight in that contact alone. 0 turns it off.

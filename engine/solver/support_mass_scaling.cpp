@@ -4,7 +4,8 @@
 // per pass: 10,000 kg on 1 kg would need thousands of passes to hold, and in
 // a few the light box is crushed into the floor. Like shock propagation
 // (Guendelman et al. 2003), contacts are ordered from the ground up by how
-// many contacts separate each body from something immovable; where an upper
+// many contacts separate each body from something immovable (of two as far,
+// the lighter is the lower); where an upper
 // body is more than the limit times heavier than its lower one, that one
 // contact sees the lower body heavier (its inverse mass and inertia scaled
 // down), so the load reaches the ground within the passes the solver has.
@@ -46,8 +47,7 @@ BodyManifolds manifoldsByBody(const std::vector<ContactManifold>& manifolds, std
 
 // Levels, breadth first in manifold order (deterministic): 0 for bodies that
 // cannot move this step (static, kinematic, asleep), then one more per
-// contact. Contacts between bodies of one level, or with no path to the
-// ground, are not scaled.
+// contact. Contacts with no path to the ground are not scaled.
 std::vector<std::pair<double, double>> SequentialImpulseSolver::supportMassScales(
     const std::vector<ContactManifold>& manifolds) const {
   std::vector<std::pair<double, double>> scales(manifolds.size(), {1.0, 1.0});
@@ -74,8 +74,13 @@ std::vector<std::pair<double, double>> SequentialImpulseSolver::supportMassScale
   }
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
     const std::uint32_t a = manifolds[m].a, b = manifolds[m].b;
-    if (level[a] == unreached || level[b] == unreached || level[a] == level[b]) continue;
-    const bool aIsLower = level[a] < level[b];
+    if (level[a] == unreached || level[b] == unreached) continue;
+    // Bodies one contact apart at the same level each lean on the ground
+    // through others: a light box a heavy one presses against a wall. The
+    // lighter one takes the other's push on to its own supports, so it is
+    // the lower one.
+    const bool aIsLower =
+        level[a] != level[b] ? level[a] < level[b] : solverBodies_[a].inverseMass > solverBodies_[b].inverseMass;
     const double lowerInverse = solverBodies_[aIsLower ? a : b].inverseMass;
     const double upperInverse = solverBodies_[aIsLower ? b : a].inverseMass;
     if (!(lowerInverse > limit * upperInverse)) continue;  // also skips a fixed lower body

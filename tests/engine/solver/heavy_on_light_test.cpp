@@ -1,13 +1,16 @@
 // Heavy bodies on light ones (SolverSettings::massRatioLimit): a 1 kg box
 // under 10,000 kg holds, a 1 kg / 1e6 kg / 1 kg stack never sinks into the
 // floor, and ordinary mass ratios are solved exactly as without the scaling.
+// Sideways too: a light box a heavy one pushes against a wall stays out of it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "engine/colliders/box_collider.h"
 #include "engine/world.h"
+#include "tests/engine/stable_test_helpers.h"
 #include "tests/engine/test_bodies.h"
 
 namespace physdbg {
@@ -85,6 +88,59 @@ TEST(HeavyOnLight, RatiosUpToTheLimitAreUntouched) {
     plain.step();
   }
   for (BodyId box = 1; box <= 4; ++box) EXPECT_EQ(scaled.body(box).position(), plain.body(box).position());
+}
+
+// A 0.1 kg box on the floor between a static wall and a 100 kg box that a
+// steady 2000 N pushes towards the wall (a heavy pile leaning on it). Both
+// boxes stand on the floor, one contact from the ground, and nothing here is
+// along gravity, so neither the ground-up order of the mass scaling nor the
+// weights tell the solver about this load. The lighter body of the two
+// counts as the lower one (supportMassScales), and what the contacts carried
+// last step sets their stiffness (loadedHertz). Without both, the light box
+// ends 24 cm inside the wall; at 60 Hz a soft contact alone would settle
+// 2000 N / (0.1 kg (2 pi 60 Hz)^2) = 14 cm deep.
+struct Squeeze {
+  World world;
+  BodyId light = 0, heavy = 0;
+};
+
+Squeeze sidewaysSqueeze() {
+  WorldSettings settings;
+  settings.allowSleep = false;
+  Squeeze squeeze{World(settings)};
+  World& world = squeeze.world;
+  world.addBody(testbodies::floorSlab());
+  BodyDefinition wall = testbodies::box(Vec3(-0.75, 1.0, 0));
+  wall.collider = std::make_shared<BoxCollider>(Vec3(0.5, 1.0, 1.0));
+  wall.isStatic = true;
+  world.addBody(wall);
+  BodyDefinition light = testbodies::box(Vec3(0.0, 0.25, 0), 0.25);
+  light.mass = 0.1;
+  squeeze.light = world.addBody(light);
+  BodyDefinition heavy = testbodies::box(Vec3(0.75, 0.5, 0));
+  heavy.mass = 100.0;
+  squeeze.heavy = world.addBody(heavy);
+  return squeeze;
+}
+
+TEST(HeavyOnLight, ALightBoxPushedSidewaysStaysOutOfTheWall) {
+  Squeeze squeeze = sidewaysSqueeze();
+  World& world = squeeze.world;
+  double intoWall = 0.0, intoLight = 0.0;
+  for (int step = 0; step < 600; ++step) {
+    world.body(squeeze.heavy).addForce(Vec3(-2000.0, 0, 0));
+    world.step();
+    const double lightLeft = world.body(squeeze.light).position().x() - 0.25;
+    intoWall = std::max(intoWall, -0.25 - lightLeft);
+    const double heavyLeft = world.body(squeeze.heavy).position().x() - 0.5;
+    intoLight = std::max(intoLight, lightLeft + 0.5 - heavyLeft);
+  }
+  stable::reportFigure("light box into the wall (m)", intoWall);
+  stable::reportFigure("heavy box into the light one (m)", intoLight);
+  EXPECT_LT(intoWall, 0.01) << "light box into the wall";
+  EXPECT_LT(intoLight, 0.01) << "heavy box into the light one";
+  EXPECT_GT(world.body(squeeze.light).position().y(), 0.24);
+  EXPECT_TRUE(world.numericalFaults().empty());
 }
 
 }  // namespace
