@@ -49,13 +49,9 @@ struct WorldSettings {
   // A resting pair whose bodies stayed within a tenth of a millimetre of
   // where its contact was last computed takes that contact again, carried
   // along with the bodies (contact_reuse.h): 9.5% fewer instructions on 300
-  // steps of the 1000-box drop. Off by default for now: it reshuffles which
-  // way a chaotic mixed pile settles, and one of the stability suite's three
-  // seeds then settles with a 0.1 kg box crushed 3 cm into a wall by the pile
-  // (the resting-load scaling only works along gravity). Off, 1 of 24 seeds
-  // fails that test too (two light boxes 1 cm into each other). On once
-  // sideways loads are scaled too.
-  bool reuseContacts = false;
+  // steps of the 1000-box drop. Scene key collision.reuse_contacts; off, every
+  // pair is tested anew each step (to compare against, or to rule it out).
+  bool reuseContacts = true;
 
   bool allowSleep = true;
   double sleepLinearSpeed = 0.05;   // m/s

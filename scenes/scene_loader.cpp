@@ -305,10 +305,12 @@ void readBroadPhase(const JsonReader& reader, const json& value, const std::stri
 
 void readCollision(const JsonReader& reader, const json& value, const std::string& path, WorldSettings& world) {
   reader.requireObject(value, path);
-  reader.checkKeys(value, path, {"device"});
+  reader.checkKeys(value, path, {"device", "reuse_contacts"});
   if (value.contains("device"))
     world.collisionDevice = readChoice<CollisionDevice>(reader, value["device"], path + ".device",
                                                         {{"cpu", CollisionDevice::Cpu}, {"gpu", CollisionDevice::Gpu}});
+  if (value.contains("reuse_contacts"))
+    world.reuseContacts = reader.boolean(value["reuse_contacts"], path + ".reuse_contacts");
 }
 
 void readWorldKeys(const JsonReader& reader, const json& root, SceneDescription& scene) {

@@ -277,6 +277,19 @@ TEST(SceneLoader, BroadPhaseSwitches) {
   EXPECT_EQ(brute.world.fatMargin, 0.0);
 }
 
+// Contact reuse is on unless the scene turns it off; a non-bool is refused
+// by name.
+TEST(SceneLoader, ContactReuseSwitch) {
+  EXPECT_TRUE(parseScene(R"({"bodies": []})", "r.json").world.reuseContacts);
+  EXPECT_FALSE(parseScene(R"({"collision": {"reuse_contacts": false}, "bodies": []})", "r.json").world.reuseContacts);
+  try {
+    parseScene(R"({"collision": {"reuse_contacts": 1}, "bodies": []})", "r.json");
+    ADD_FAILURE() << "a number was taken for a bool";
+  } catch (const SceneError& error) {
+    EXPECT_NE(std::string(error.what()).find("collision.reuse_contacts"), std::string::npos) << error.what();
+  }
+}
+
 TEST(SceneLoader, RejectsBadCapsulesHullsAndWorldKeys) {
   const auto message = [](const std::string& text) {
     try {
