@@ -136,7 +136,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   void warmStart(std::vector<ContactManifold>& manifolds, IslandWork& work);
   void warmStartManifold(ContactManifold& manifold, std::size_t m);
   void prepareManifold(const std::vector<RigidBody>& bodies, ContactManifold& manifold, std::size_t m);
-  void prepareApproaches(const std::vector<ContactManifold>& manifolds);
+  void prepareApproaches(const std::vector<ContactManifold>& manifolds, const Vec3& gravity, double dt);
   // useBias: the soft push-out of overlap (off in the relax pass after positions moved).
   void solveNormals(ContactManifold& manifold, std::size_t m, const SubstepContext& substeps, bool useBias,
                     bool reversed);
