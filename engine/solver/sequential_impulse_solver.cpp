@@ -522,8 +522,10 @@ void SequentialImpulseSolver::updateCalmTimes(std::size_t bodyCount, double dt) 
 // point would then settle deeper than restingOverlap; substeps follow the
 // frequency, since a soft contact stiffer than a quarter of the substep rate
 // rings. Past maxSubsteps the frequency is capped and the overlap grows.
-// A calm island starts from calmSubsteps, unless it had to be stiffened: a
-// heavy load carried down a chain of contacts needs the full substeps.
+// A calm island takes as few substeps as its loads allow, no fewer than
+// calmSubsteps, at the frequency they allow (at most the settings'). One
+// whose loads need a stiffer contact than the settings' is not calm: a heavy
+// load carried down a chain of contacts needs the full substeps.
 SubstepContext SequentialImpulseSolver::chooseSubsteps(const std::vector<ContactManifold>& manifolds,
                                                        const ContactIsland& island, const std::vector<double>& loads,
                                                        double gravity, const StepContext& step, bool calm) const {
@@ -532,13 +534,19 @@ SubstepContext SequentialImpulseSolver::chooseSubsteps(const std::vector<Contact
   const int full = std::max(settings.substeps, 1);
   const int most = std::max(settings.maxSubsteps, full);
   double hertz = settings.contactHertz;
-  if (hertz > 0.0 && settings.restingOverlap > 0.0 && most > full)
-    hertz = std::max(hertz, loadedHertz(manifolds, island, loads, gravity));
-  const bool stiffened = hertz > settings.contactHertz;
-  const int fewest = calm && !stiffened ? std::clamp(settings.calmSubsteps, 1, full) : full;
+  const double loaded = hertz > 0.0 && settings.restingOverlap > 0.0 && most > full
+                            ? loadedHertz(manifolds, island, loads, gravity)
+                            : 0.0;
+  if (calm && loaded <= hertz) {
+    const double needed = std::ceil(4.0 * loaded * dt - 1e-9);
+    const double fewest = std::clamp(settings.calmSubsteps, 1, full);
+    const int count = static_cast<int>(std::clamp(needed, fewest, static_cast<double>(full)));
+    return substepContext(step, count, std::min(hertz, 0.25 * count / dt), settings.dampingRatio);
+  }
+  hertz = std::max(hertz, loaded);
   // Substeps that make `hertz` a quarter of the substep rate, within bounds.
   const double wanted = std::ceil(4.0 * hertz * dt - 1e-9);
-  const int substeps = static_cast<int>(std::clamp(wanted, static_cast<double>(fewest), static_cast<double>(most)));
+  const int substeps = static_cast<int>(std::clamp(wanted, static_cast<double>(full), static_cast<double>(most)));
   return substepContext(step, substeps, std::min(hertz, 0.25 * substeps / dt), settings.dampingRatio);
 }
 

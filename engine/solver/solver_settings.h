@@ -62,6 +62,10 @@ struct SolverSettings {
   // starting already carries that from step to step. Bodies landing, sliding,
   // settling or pushed apart keep `substeps`, as do islands the resting-load
   // stiffening below has to stiffen. calmSubsteps = substeps turns this off.
+  // Below 4, a calm island's contacts soften to a quarter of its substep rate
+  // (2: 30 Hz), and it takes as many substeps as its load needs to settle
+  // within restingOverlap: the 1000-box drop takes 13% fewer instructions
+  // with 2, and a box alone rests 0.28 mm deep instead of 0.07 mm.
   int calmSubsteps = 4;
   double calmSpeed = 0.1;
   bool warmStarting = true;

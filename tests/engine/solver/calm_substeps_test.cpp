@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -91,6 +92,27 @@ TEST(CalmSubsteps, ABoxSettlesAsDeepWithFewerSubsteps) {
   EXPECT_NEAR(overlap, reference, 1e-5);
   EXPECT_LT(std::abs(overlap), 1e-3);
   EXPECT_LT(calm.body(1).linearVelocity().norm(), 1e-6);
+}
+
+// Below 4 calm substeps the contact softens to a quarter of their rate: with
+// 2, a box alone rests on a 30 Hz spring, g / omega^2 = 9.81 / (2 pi 30)^2 =
+// 0.276 mm deep. An island takes as many as its load needs: the floor contact
+// under ten unit boxes holds 2.5 kg per corner on an effective mass of
+// 0.25 kg, which needs 31.5 Hz to settle within restingOverlap (2.5 mm), so
+// the stack takes 3 substeps at 45 Hz; under four boxes 2 at 30 Hz do.
+TEST(CalmSubsteps, FewerThanFourSoftenTheContactAsFarAsTheLoadAllows) {
+  World lone = boxStack(1, 2);
+  run(lone, 120);
+  EXPECT_EQ(lone.lastStepStats().substeps, 2);
+  EXPECT_DOUBLE_EQ(lone.lastStepStats().contactHertz, 30.0);
+  EXPECT_NEAR(0.5 - lone.body(1).position().y(), 9.81 / std::pow(2.0 * std::numbers::pi * 30.0, 2), 1e-5);
+  for (const auto& [boxes, substeps] : {std::pair{4, 2}, std::pair{10, 3}}) {
+    World stack = boxStack(boxes, 2);
+    run(stack, 120);
+    EXPECT_EQ(stack.lastStepStats().substeps, substeps) << boxes << " boxes";
+    EXPECT_DOUBLE_EQ(stack.lastStepStats().contactHertz, 15.0 * substeps) << boxes << " boxes";
+    EXPECT_LT(stack.lastStepStats().largestPenetration, defaults.restingOverlap) << boxes << " boxes";
+  }
 }
 
 // A box falling onto the floor is in flight (speculative contacts only)
