@@ -235,29 +235,35 @@ void World::findContacts(const StepContext& context) {
   stats_.contacts = static_cast<int>(contacts_.size());
 }
 
-World::PairTest World::testPair(const BodyPair& pair, const StepContext& context) const {
-  PairTest test;
+// Writes into `test` in place: most candidate pairs end at the bounds, and a
+// whole PairTest (two contact results) per pair cost more than that check.
+// The results are written only for pairs tested.
+void World::testPair(const BodyPair& pair, const StepContext& context, PairTest& test) const {
+  test.outcome = PairTest::Outcome::Skipped;
+  test.reach = 0.0;
+  test.offloaded = false;
+  test.kept = nullptr;
   const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
-  if (!a.isDynamic() && !b.isDynamic()) return test;  // a kinematic body passes through static ones
+  if (!a.isDynamic() && !b.isDynamic()) return;  // a kinematic body passes through static ones
   // Fat boxes overlap long before the shapes can touch: when even the tight
   // boxes, grown by how far the pair can close this step, stay apart, the
   // narrow phase has nothing to say.
   test.reach = solver_->contactReach(bodyReaches_[pair.a], bodyReaches_[pair.b], context);
   if (!tightBounds_[pair.a].enlarged(test.reach).overlaps(tightBounds_[pair.b])) {
     test.outcome = PairTest::Outcome::BoundsRejected;
-    return test;
+    return;
   }
   test.outcome = PairTest::Outcome::Tested;
   if (offload_ && offload_->handles(a.collider().kind(), b.collider().kind()) && !settings_.bruteForceBothOrders) {
     test.offloaded = true;
-    return test;
+    return;
   }
   if (reusesContacts()) {
     const ReusableContact* kept = findKept(kept_, pair);
     if (kept && stillHolds(*kept, a.transform(), b.transform(), ContactReuseTolerance{}) &&
         carryResult(*kept, a.transform(), b.transform(), test.result)) {
       test.kept = kept;
-      return test;
+      return;
     }
   }
   test.result = collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase);
@@ -265,7 +271,6 @@ World::PairTest World::testPair(const BodyPair& pair, const StepContext& context
   // once per pair, so that second answer is only counted (gatherContacts).
   if (settings_.bruteForceBothOrders)
     test.reversed = collide(b.collider(), b.transform(), a.collider(), a.transform(), settings_.narrowPhase);
-  return test;
 }
 
 // What testPair needs of each body of a candidate pair alone, once per body:
@@ -291,7 +296,7 @@ void World::testPairs(const StepContext& context) {
   carriedManifolds_.resize(pairs_.size());
   tasks_->parallelFor(pairs_.size(), pairGrain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      pairTests_[i] = testPair(pairs_[i], context);
+      testPair(pairs_[i], context, pairTests_[i]);
       if (const ReusableContact* kept = pairTests_[i].kept)
         carryManifold(*kept, bodies_[kept->pair.a].transform(), bodies_[kept->pair.b].transform(),
                       carriedManifolds_[i]);

@@ -230,7 +230,7 @@ class World {
     bool offloaded = false;  // the collision offload answers it (testOffloadedPairs)
     const ReusableContact* kept = nullptr;  // the last answer, carried to now (result and carriedManifolds_)
   };
-  PairTest testPair(const BodyPair& pair, const StepContext& context) const;
+  void testPair(const BodyPair& pair, const StepContext& context, PairTest& test) const;
   void measureBodies(const StepContext& context);
   void testPairs(const StepContext& context);
   void testOffloadedPairs();

@@ -1,7 +1,6 @@
 #include "engine/solver/constraint_colouring.h"
 
 #include <algorithm>
-#include <unordered_map>
 
 namespace physdbg {
 namespace {
@@ -27,16 +26,23 @@ ConstraintColouring colourConstraints(const std::vector<ContactManifold>& all,
                                       const std::vector<std::uint32_t>& manifolds, const std::vector<bool>& movable,
                                       int colourLimit) {
   colourLimit = std::clamp(colourLimit, 0, ConstraintColouring::maxColours);
-  // Movable bodies numbered 0, 1, ... in order of first appearance.
-  std::unordered_map<std::uint32_t, std::uint32_t> place;
+  // Movable bodies numbered by their rank among the island's movable bodies:
+  // a sorted list and a binary search, no hashing (this runs every step).
+  std::vector<std::uint32_t> bodies;
+  bodies.reserve(2 * manifolds.size());
+  for (std::uint32_t m : manifolds)
+    for (std::uint32_t body : {all[m].a, all[m].b})
+      if (movable[body]) bodies.push_back(body);
+  std::sort(bodies.begin(), bodies.end());
+  bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
   const auto local = [&](std::uint32_t body) {
     if (!movable[body]) return immovable;
-    return place.try_emplace(body, static_cast<std::uint32_t>(place.size())).first->second;
+    return static_cast<std::uint32_t>(std::lower_bound(bodies.begin(), bodies.end(), body) - bodies.begin());
   };
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ends(manifolds.size());
   for (std::size_t i = 0; i < manifolds.size(); ++i) ends[i] = {local(all[manifolds[i]].a), local(all[manifolds[i]].b)};
 
-  BodyBits bits(place.size(), colourLimit);
+  BodyBits bits(bodies.size(), colourLimit);
   std::vector<std::vector<std::uint32_t>> colours(colourLimit);
   ConstraintColouring result;
   for (std::size_t i = 0; i < manifolds.size(); ++i) {

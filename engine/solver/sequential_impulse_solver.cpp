@@ -652,10 +652,13 @@ void SequentialImpulseSolver::prepareManifold(const std::vector<RigidBody>& bodi
   const SolverBody &bodyA = solverBodies_[manifold.a], &bodyB = solverBodies_[manifold.b];
   const auto [scaleA, scaleB] = scale;
   const double inverseMassA = scaleA * bodyA.inverseMass, inverseMassB = scaleB * bodyB.inverseMass;
-  const Mat3 inverseInertiaA = scaleA * bodyA.inverseInertia, inverseInertiaB = scaleB * bodyB.inverseInertia;
   const double inverseMassSum = inverseMassA + inverseMassB;
   const CombinedMaterial material =
       combineMaterials(a.material(), b.material(), settings.restitutionCombine(), settings.frictionCombine());
+  Vec3 tangents[2];
+  tangentBasis(manifold.normal, tangents[0], tangents[1]);
+  const Vec3 directions[3] = {manifold.normal, tangents[0], tangents[1]};
+  const Mat3 inverseInertiaA = scaleA * bodyA.inverseInertia, inverseInertiaB = scaleB * bodyB.inverseInertia;
   for (int p = 0; p < manifold.pointCount; ++p) {
     ManifoldPoint& point = manifold.points[p];
     PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
@@ -666,8 +669,8 @@ void SequentialImpulseSolver::prepareManifold(const std::vector<RigidBody>& bodi
     const Vec3 middle = 0.5 * (point.pointA + point.pointB);
     c.armA = (apart ? point.pointA : middle) - a.position();
     c.armB = (apart ? point.pointB : middle) - b.position();
-    tangentBasis(manifold.normal, c.tangent[0], c.tangent[1]);
-    const Vec3 directions[3] = {manifold.normal, c.tangent[0], c.tangent[1]};
+    c.tangent[0] = tangents[0];
+    c.tangent[1] = tangents[1];
     for (int row = 0; row < 3; ++row) {
       c.crossA[row] = c.armA.cross(directions[row]);
       c.crossB[row] = c.armB.cross(directions[row]);
