@@ -7,6 +7,8 @@
 // Each operation rounds exactly as the scalar one it stands for, so the wide
 // solve matches the scalar one up to the order of a few sums.
 #include <Eigen/Core>
+#include <cstdint>
+#include <cstring>
 
 namespace physdbg::simd {
 
@@ -38,6 +40,15 @@ inline Lanes sqrt(Lanes a) { return {Eigen::internal::psqrt(a.value)}; }
 // Masks: all bits set in a lane where the comparison holds.
 inline Lanes greater(Lanes a, Lanes b) { return {Eigen::internal::pcmp_lt(b.value, a.value)}; }
 inline Lanes both(Lanes a, Lanes b) { return {Eigen::internal::pand(a.value, b.value)}; }
+// Whether `mask` is set in any lane: lets a rare branch (a friction clamp)
+// skip its costly operations when no lane takes it.
+inline bool any(Lanes mask) {
+  std::uint64_t bits[width];
+  std::memcpy(bits, &mask.value, sizeof bits);
+  std::uint64_t set = 0;
+  for (int i = 0; i < width; ++i) set |= bits[i];
+  return set != 0;
+}
 // Lane by lane: `yes` where `mask` is set, else `no`.
 inline Lanes select(Lanes mask, Lanes yes, Lanes no) { return {Eigen::internal::pselect(mask.value, yes.value, no.value)}; }
 

@@ -149,8 +149,12 @@ void solveFriction(LaneVelocities& a, LaneVelocities& b, const WideManifolds& gr
   const Lanes limit = point.friction * point.normalImpulse;
   const Lanes squared = tangent[0] * tangent[0] + tangent[1] * tangent[1];
   const Lanes clamp = simd::both(simd::greater(squared, limit * limit), simd::greater(squared, Lanes::zero()));
-  const Lanes scale = limit / simd::sqrt(simd::select(clamp, squared, Lanes::all(1.0)));
-  for (int t = 0; t < 2; ++t) tangent[t] = simd::select(clamp, tangent[t] * scale, tangent[t]);
+  // Resting contacts stick: most sweeps clamp no lane, and the square root
+  // and division were a fifth of the whole wide solve.
+  if (simd::any(clamp)) {
+    const Lanes scale = limit / simd::sqrt(simd::select(clamp, squared, Lanes::all(1.0)));
+    for (int t = 0; t < 2; ++t) tangent[t] = simd::select(clamp, tangent[t] * scale, tangent[t]);
+  }
   applyRow(a, b, group, point, 1, tangent[0] - point.tangentImpulse[0]);
   applyRow(a, b, group, point, 2, tangent[1] - point.tangentImpulse[1]);
   point.tangentImpulse[0] = tangent[0];
