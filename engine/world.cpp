@@ -259,7 +259,7 @@ void World::testPair(const BodyPair& pair, const StepContext& context, PairTest&
     return;
   }
   if (reusesContacts()) {
-    const ReusableContact* kept = findKept(kept_, pair);
+    const ReusableContact* kept = kept_.find(pair);
     if (kept && stillHolds(*kept, a.transform(), b.transform(), ContactReuseTolerance{}) &&
         carryResult(*kept, a.transform(), b.transform(), test.result)) {
       test.kept = kept;
@@ -361,21 +361,20 @@ void World::gatherContacts(const StepContext& context) {
 // order, as the candidates) whose pair was tested anew with the box-box or
 // GJK/EPA route, at today's poses; those taken again keep their old poses.
 void World::keepAnswers() {
-  nextKept_.clear();
   if (!reusesContacts()) return;
+  kept_.beginNext();
   std::size_t candidate = 0;
   for (const ContactManifold& manifold : solver_->manifolds()) {
     while (candidate < candidates_.size() &&
            (candidates_[candidate].a != manifold.a || candidates_[candidate].b != manifold.b))
       ++candidate;
     if (candidate == candidates_.size()) break;
-    if (const ReusableContact* kept = candidateKept_[candidate]) {
-      nextKept_.push_back(*kept);
+    if (candidateKept_[candidate]) {
+      kept_.carry({manifold.a, manifold.b});
       continue;
     }
     if (prebuilt_[candidate] || !worthReusing(candidates_[candidate].result)) continue;
-    ReusableContact& entry = nextKept_.emplace_back();
-    entry.pair = {manifold.a, manifold.b};
+    ReusableContact& entry = kept_.fresh({manifold.a, manifold.b});
     entry.a = bodies_[manifold.a].transform();
     entry.b = bodies_[manifold.b].transform();
     entry.result = candidates_[candidate].result;
@@ -385,7 +384,7 @@ void World::keepAnswers() {
       point.normalImpulse = point.tangentImpulse[0] = point.tangentImpulse[1] = point.stepNormalImpulse = 0.0;
     }
   }
-  kept_.swap(nextKept_);
+  kept_.endNext();
 }
 
 // The design's baseline without static-pair skipping: pairs of bodies that

@@ -290,7 +290,7 @@ class World {
   std::vector<OffloadedContact> offloaded_;      // the offload's answers
   std::vector<const ContactManifold*> prebuilt_;       // per candidate: its offloaded or carried manifold, or null
   std::vector<ContactManifold> carriedManifolds_;      // per candidate pair whose last answer was taken again
-  std::vector<ReusableContact> kept_, nextKept_;       // answers worth taking again, sorted by pair
+  KeptAnswers kept_;                                   // answers worth taking again
   std::vector<const ReusableContact*> candidateKept_;  // per candidate: the answer it took again, or null
   std::vector<PredictedMotion> predictions_;  // per body, this step (updateBroadPhase)
   std::vector<StaticRowCounts> staticRows_;   // per body, this pass (testStaticPairs)

@@ -63,11 +63,38 @@ void carryManifold(const ReusableContact& kept, const Transform& a, const Transf
   }
 }
 
-const ReusableContact* findKept(const std::vector<ReusableContact>& kept, const BodyPair& pair) {
-  const auto found =
-      std::lower_bound(kept.begin(), kept.end(), pair,
-                       [](const ReusableContact& entry, const BodyPair& key) { return entry.pair < key; });
-  return found != kept.end() && found->pair == pair ? &*found : nullptr;
+const ReusableContact* KeptAnswers::find(const BodyPair& pair) const {
+  const auto found = std::lower_bound(current_.begin(), current_.end(), pair,
+                                      [](const Entry& entry, const BodyPair& key) { return entry.pair < key; });
+  return found != current_.end() && found->pair == pair ? &slots_[found->slot] : nullptr;
+}
+
+void KeptAnswers::carry(const BodyPair& pair) {
+  while (cursor_ < current_.size() && current_[cursor_].pair < pair) ++cursor_;
+  if (cursor_ < current_.size() && current_[cursor_].pair == pair) next_.push_back(current_[cursor_]);
+}
+
+// A slot that no current entry uses: one freed by an earlier build, or a new one.
+ReusableContact& KeptAnswers::fresh(const BodyPair& pair) {
+  std::uint32_t slot;
+  if (!free_.empty()) {
+    slot = free_.back();
+    free_.pop_back();
+  } else {
+    slot = static_cast<std::uint32_t>(slots_.size());
+    slots_.emplace_back();
+  }
+  next_.push_back({pair, slot});
+  slots_[slot].pair = pair;
+  return slots_[slot];
+}
+
+void KeptAnswers::endNext() {
+  kept_.assign(slots_.size(), 0);
+  for (const Entry& entry : next_) kept_[entry.slot] = 1;
+  for (const Entry& entry : current_)
+    if (!kept_[entry.slot]) free_.push_back(entry.slot);
+  current_.swap(next_);
 }
 
 }  // namespace physdbg

@@ -8,6 +8,7 @@
 // every distance is measured anew at the current poses. Only the box-box and
 // GJK/EPA answers are kept: the analytic ones (spheres) cost less than the
 // check.
+#include <cstdint>
 #include <vector>
 
 #include "engine/broadphase/broad_phase.h"
@@ -48,7 +49,35 @@ bool stillHolds(const ReusableContact& kept, const Transform& a, const Transform
 bool carryResult(const ReusableContact& kept, const Transform& a, const Transform& b, ContactResult& result);
 void carryManifold(const ReusableContact& kept, const Transform& a, const Transform& b, ContactManifold& manifold);
 
-// The answer for `pair` among `kept` (sorted by pair), or null.
-const ReusableContact* findKept(const std::vector<ReusableContact>& kept, const BodyPair& pair);
+// The answers kept from one pass to the next, looked up by pair. A resting
+// pile takes almost every answer again every step; each answer (about 900
+// bytes with its manifold) stays in its slot, and the sorted index that finds
+// it is all that is rebuilt. Building the next pass's list:
+//   beginNext(); then carry(pair) or fresh(pair), in ascending pair order;
+//   then endNext().
+// fresh() may move the slots: pointers from find() do not survive it.
+class KeptAnswers {
+ public:
+  const ReusableContact* find(const BodyPair& pair) const;
+  void beginNext() {
+    next_.clear();
+    cursor_ = 0;
+  }
+  void carry(const BodyPair& pair);  // a pair find() answered this pass
+  ReusableContact& fresh(const BodyPair& pair);
+  void endNext();
+  std::size_t size() const { return current_.size(); }
+
+ private:
+  struct Entry {
+    BodyPair pair;
+    std::uint32_t slot;
+  };
+  std::vector<ReusableContact> slots_;
+  std::vector<std::uint32_t> free_;    // slots no entry uses
+  std::vector<Entry> current_, next_;  // sorted by pair
+  std::vector<char> kept_;             // per slot, while endNext runs
+  std::size_t cursor_ = 0;             // carry's walk through current_ (pairs come ascending)
+};
 
 }  // namespace physdbg

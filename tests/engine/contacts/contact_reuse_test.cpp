@@ -147,6 +147,42 @@ TEST(ContactReuse, AnAnswerWhoseSignChangedIsNotCarried) {
   EXPECT_FALSE(carryResult(kept, slabPose, Transform{Vec3(0, 0.5005, 0), Quat::Identity()}, result));
 }
 
+// The store keeps each answer in its slot across builds: carried answers
+// keep their contents, dropped ones are gone, and a fresh answer may take a
+// dropped one's slot without disturbing the others.
+TEST(KeptAnswers, CarriedAnswersKeepTheirContentsAndDroppedOnesGo) {
+  KeptAnswers kept;
+  const auto mark = [](const ReusableContact* entry) { return entry ? entry->result.depth : -1.0; };
+  kept.beginNext();
+  for (std::uint32_t b : {2u, 3u, 4u}) kept.fresh({1, b}).result.depth = b;
+  kept.endNext();
+  ASSERT_EQ(kept.size(), 3u);
+  EXPECT_EQ(mark(kept.find({1, 3})), 3.0);
+  EXPECT_EQ(kept.find({1, 5}), nullptr);
+
+  kept.beginNext();
+  kept.carry({1, 2});
+  kept.carry({1, 4});
+  kept.fresh({1, 7}).result.depth = 7;
+  kept.carry({1, 9});  // never kept: nothing to carry
+  kept.endNext();
+  EXPECT_EQ(kept.size(), 3u);
+  EXPECT_EQ(mark(kept.find({1, 2})), 2.0);
+  EXPECT_EQ(kept.find({1, 3}), nullptr);
+  EXPECT_EQ(mark(kept.find({1, 4})), 4.0);
+  EXPECT_EQ(mark(kept.find({1, 7})), 7.0);
+
+  kept.beginNext();  // (1,3)'s slot is free again
+  kept.fresh({0, 1}).result.depth = 10;
+  kept.carry({1, 2});
+  kept.carry({1, 7});
+  kept.endNext();
+  EXPECT_EQ(mark(kept.find({0, 1})), 10.0);
+  EXPECT_EQ(mark(kept.find({1, 2})), 2.0);
+  EXPECT_EQ(mark(kept.find({1, 7})), 7.0);
+  EXPECT_EQ(kept.find({1, 4}), nullptr);
+}
+
 // Four boxes at rest on a floor: once settled their pairs are taken again,
 // and the column ends where it ends with every pair tested anew, to within
 // a tenth of a millimetre.
