@@ -43,11 +43,17 @@ inline Lanes both(Lanes a, Lanes b) { return {Eigen::internal::pand(a.value, b.v
 // Whether `mask` is set in any lane: lets a rare branch (a friction clamp)
 // skip its costly operations when no lane takes it.
 inline bool any(Lanes mask) {
+#if defined(EIGEN_VECTORIZE_AVX)
+  return _mm256_movemask_pd(mask.value) != 0;
+#elif defined(EIGEN_VECTORIZE_SSE2)
+  return _mm_movemask_pd(mask.value) != 0;
+#else
   std::uint64_t bits[width];
   std::memcpy(bits, &mask.value, sizeof bits);
   std::uint64_t set = 0;
   for (int i = 0; i < width; ++i) set |= bits[i];
   return set != 0;
+#endif
 }
 // Lane by lane: `yes` where `mask` is set, else `no`.
 inline Lanes select(Lanes mask, Lanes yes, Lanes no) { return {Eigen::internal::pselect(mask.value, yes.value, no.value)}; }
