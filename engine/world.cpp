@@ -243,8 +243,9 @@ void World::testPair(const BodyPair& pair, const StepContext& context, PairTest&
   test.reach = 0.0;
   test.offloaded = false;
   test.kept = nullptr;
-  const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
-  if (!a.isDynamic() && !b.isDynamic()) return;  // a kinematic body passes through static ones
+  // A kinematic body passes through static ones. (Dense per-body flags: most
+  // pairs end at the bounds, and need not touch the bodies themselves.)
+  if (!dynamicInPair_[pair.a] && !dynamicInPair_[pair.b]) return;
   // Fat boxes overlap long before the shapes can touch: when even the tight
   // boxes, grown by how far the pair can close this step, stay apart, the
   // narrow phase has nothing to say.
@@ -254,6 +255,7 @@ void World::testPair(const BodyPair& pair, const StepContext& context, PairTest&
     return;
   }
   test.outcome = PairTest::Outcome::Tested;
+  const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
   if (offload_ && offload_->handles(a.collider().kind(), b.collider().kind()) && !settings_.bruteForceBothOrders) {
     test.offloaded = true;
     return;
@@ -281,9 +283,11 @@ void World::measureBodies(const StepContext& context) {
   for (const BodyPair& pair : pairs_) inSomePair_[pair.a] = inSomePair_[pair.b] = 1;
   tightBounds_.resize(bodies_.size());
   bodyReaches_.resize(bodies_.size());
+  dynamicInPair_.resize(bodies_.size());
   tasks_->parallelFor(bodies_.size(), bodyGrain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t id = begin; id < end; ++id) {
       if (!inSomePair_[id]) continue;
+      dynamicInPair_[id] = bodies_[id].isDynamic() ? 1 : 0;
       tightBounds_[id] = bodies_[id].collider().worldBounds(bodies_[id].transform());
       bodyReaches_[id] = solver_->bodyReach(bodies_[id], context);
     }

@@ -281,6 +281,7 @@ class World {
   std::vector<BodyPair> pairs_;
   std::vector<PairTest> pairTests_;          // per candidate pair, this pass (testPairs)
   std::vector<char> inSomePair_;             // per body, this pass (measureBodies)
+  std::vector<char> dynamicInPair_;          // per body in a pair, this pass (measureBodies)
   std::vector<Aabb> tightBounds_;            // per body in a pair, this pass (measureBodies)
   std::vector<BodyReach> bodyReaches_;       // per body, this pass (measureBodies)
   std::vector<Contact> candidates_;          // tested pairs, for the solver (gatherContacts)

@@ -58,15 +58,14 @@ std::vector<double> restingLoads(const std::vector<RigidBody>& bodies, const std
   std::vector<double> manifoldLoad(manifolds.size(), 0.0);
   if (manifolds.empty()) return manifoldLoad;
   const SupportTable table = findSupports(bodies.size(), movable, manifolds, touching, up);
-  std::vector<std::uint32_t> order;
+  // Highest first, each body's height measured once; ties keep id order, so
+  // the walk is deterministic.
+  std::vector<std::pair<double, std::uint32_t>> order;
   for (std::uint32_t id = 0; id < bodies.size(); ++id)
-    if (table.first[id + 1] > table.first[id]) order.push_back(id);
-  // Ties keep id order, so the walk is deterministic.
-  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) {
-    return bodies[x].position().dot(up) > bodies[y].position().dot(up);
-  });
+    if (table.first[id + 1] > table.first[id]) order.emplace_back(bodies[id].position().dot(up), id);
+  std::stable_sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
   std::vector<double> carried(bodies.size(), 0.0);
-  for (std::uint32_t id : order) {
+  for (const auto& [height, id] : order) {
     const std::uint32_t begin = table.first[id], end = table.first[id + 1];
     const double share = (carried[id] + bodies[id].mass()) / static_cast<double>(end - begin);
     for (std::uint32_t s = begin; s < end; ++s) {
