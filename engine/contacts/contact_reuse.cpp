@@ -90,10 +90,10 @@ ReusableContact& KeptAnswers::fresh(const BodyPair& pair) {
 }
 
 void KeptAnswers::endNext() {
-  kept_.assign(slots_.size(), 0);
-  for (const Entry& entry : next_) kept_[entry.slot] = 1;
+  inNext_.assign(slots_.size(), 0);
+  for (const Entry& entry : next_) inNext_[entry.slot] = 1;
   for (const Entry& entry : current_)
-    if (!kept_[entry.slot]) free_.push_back(entry.slot);
+    if (!inNext_[entry.slot]) free_.push_back(entry.slot);
   current_.swap(next_);
 }
 

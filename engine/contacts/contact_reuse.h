@@ -76,7 +76,7 @@ class KeptAnswers {
   std::vector<ReusableContact> slots_;
   std::vector<std::uint32_t> free_;    // slots no entry uses
   std::vector<Entry> current_, next_;  // sorted by pair
-  std::vector<char> kept_;             // per slot, while endNext runs
+  std::vector<char> inNext_;           // per slot, while endNext runs
   std::size_t cursor_ = 0;             // carry's walk through current_ (pairs come ascending)
 };
 

@@ -44,6 +44,8 @@ std::vector<ContactIsland> buildContactIslands(const std::vector<ContactManifold
     islands[i].manifolds.reserve(counts[i].first);
     islands[i].bodies.reserve(counts[i].second);
   }
+  // The fill meets bodies in the same order as the count: it clears each
+  // body's mark as it lists it, so each body is listed once.
   for (std::uint32_t m = 0; m < manifolds.size(); ++m) {
     if (manifoldIsland[m] == none) continue;
     ContactIsland& island = islands[manifoldIsland[m]];
