@@ -235,44 +235,35 @@ void World::findContacts(const StepContext& context) {
   stats_.contacts = static_cast<int>(contacts_.size());
 }
 
-// Writes into `test` in place: most candidate pairs end at the bounds, and a
-// whole PairTest (two contact results) per pair cost more than that check.
-// The results are written only for pairs tested.
-void World::testPair(const BodyPair& pair, const StepContext& context, PairTest& test) const {
-  test.outcome = PairTest::Outcome::Skipped;
-  test.reach = 0.0;
-  test.offloaded = false;
-  test.kept = nullptr;
+// Writes into `answer` in place, and only for pairs it tests.
+World::PairOutcome World::testPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer) const {
   // A kinematic body passes through static ones. (Dense per-body flags: most
   // pairs end at the bounds, and need not touch the bodies themselves.)
-  if (!dynamicInPair_[pair.a] && !dynamicInPair_[pair.b]) return;
+  if (!dynamicInPair_[pair.a] && !dynamicInPair_[pair.b]) return PairOutcome::Skipped;
   // Fat boxes overlap long before the shapes can touch: when even the tight
   // boxes, grown by how far the pair can close this step, stay apart, the
   // narrow phase has nothing to say.
-  test.reach = solver_->contactReach(bodyReaches_[pair.a], bodyReaches_[pair.b], context);
-  if (!tightBounds_[pair.a].enlarged(test.reach).overlaps(tightBounds_[pair.b])) {
-    test.outcome = PairTest::Outcome::BoundsRejected;
-    return;
-  }
-  test.outcome = PairTest::Outcome::Tested;
+  const double reach = solver_->contactReach(bodyReaches_[pair.a], bodyReaches_[pair.b], context);
+  if (!tightBounds_[pair.a].enlarged(reach).overlaps(tightBounds_[pair.b])) return PairOutcome::BoundsRejected;
+  answer.reach = reach;
+  answer.kept = nullptr;
   const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
-  if (offload_ && offload_->handles(a.collider().kind(), b.collider().kind()) && !settings_.bruteForceBothOrders) {
-    test.offloaded = true;
-    return;
-  }
+  if (offload_ && offload_->handles(a.collider().kind(), b.collider().kind()) && !settings_.bruteForceBothOrders)
+    return PairOutcome::Offloaded;
   if (reusesContacts()) {
     const ReusableContact* kept = kept_.find(pair);
     if (kept && stillHolds(*kept, a.transform(), b.transform(), ContactReuseTolerance{}) &&
-        carryResult(*kept, a.transform(), b.transform(), test.result)) {
-      test.kept = kept;
-      return;
+        carryResult(*kept, a.transform(), b.transform(), answer.result)) {
+      answer.kept = kept;
+      return PairOutcome::Tested;
     }
   }
-  test.result = collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase);
+  answer.result = collide(a.collider(), a.transform(), b.collider(), b.transform(), settings_.narrowPhase);
   // The design's brute force ran the narrow phase for B-A too; it responded
   // once per pair, so that second answer is only counted (gatherContacts).
   if (settings_.bruteForceBothOrders)
-    test.reversed = collide(b.collider(), b.transform(), a.collider(), a.transform(), settings_.narrowPhase);
+    answer.reversed = collide(b.collider(), b.transform(), a.collider(), a.transform(), settings_.narrowPhase);
+  return PairOutcome::Tested;
 }
 
 // What testPair needs of each body of a candidate pair alone, once per body:
@@ -296,12 +287,14 @@ void World::measureBodies(const StepContext& context) {
 
 void World::testPairs(const StepContext& context) {
   measureBodies(context);
-  pairTests_.resize(pairs_.size());
+  pairOutcomes_.resize(pairs_.size());
+  pairAnswers_.resize(pairs_.size());
   carriedManifolds_.resize(pairs_.size());
   tasks_->parallelFor(pairs_.size(), pairGrain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      testPair(pairs_[i], context, pairTests_[i]);
-      if (const ReusableContact* kept = pairTests_[i].kept)
+      pairOutcomes_[i] = testPair(pairs_[i], context, pairAnswers_[i]);
+      if (pairOutcomes_[i] != PairOutcome::Tested) continue;
+      if (const ReusableContact* kept = pairAnswers_[i].kept)
         carryManifold(*kept, bodies_[kept->pair.a].transform(), bodies_[kept->pair.b].transform(),
                       carriedManifolds_[i]);
     }
@@ -314,14 +307,14 @@ void World::testOffloadedPairs() {
   offloadRequests_.clear();
   offloadPairs_.clear();
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
-    if (!pairTests_[i].offloaded) continue;
-    offloadRequests_.push_back({pairs_[i].a, pairs_[i].b, pairTests_[i].reach});
+    if (pairOutcomes_[i] != PairOutcome::Offloaded) continue;
+    offloadRequests_.push_back({pairs_[i].a, pairs_[i].b, pairAnswers_[i].reach});
     offloadPairs_.push_back(i);
   }
   offloaded_.clear();
   if (offloadRequests_.empty()) return;
   offload_->collide(bodies_, offloadRequests_, offloaded_);
-  for (std::size_t k = 0; k < offloadPairs_.size(); ++k) pairTests_[offloadPairs_[k]].result = offloaded_[k].result;
+  for (std::size_t k = 0; k < offloadPairs_.size(); ++k) pairAnswers_[offloadPairs_[k]].result = offloaded_[k].result;
 }
 
 // In pair order: the counters, the candidates the solver turns into
@@ -335,12 +328,13 @@ void World::gatherContacts(const StepContext& context) {
   candidateKept_.clear();
   std::size_t offloadedSoFar = 0;
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
-    const PairTest& test = pairTests_[i];
-    if (test.outcome == PairTest::Outcome::Skipped) continue;
-    if (test.outcome == PairTest::Outcome::BoundsRejected) {
+    const PairOutcome outcome = pairOutcomes_[i];
+    if (outcome == PairOutcome::Skipped) continue;
+    if (outcome == PairOutcome::BoundsRejected) {
       ++stats_.boundsRejected;
       continue;
     }
+    const PairAnswer& test = pairAnswers_[i];
     const Contact contact{pairs_[i].a, pairs_[i].b, test.result};
     if (test.kept)
       stats_.narrowPhase.addReused();
@@ -350,7 +344,7 @@ void World::gatherContacts(const StepContext& context) {
     candidates_.push_back(contact);
     reaches_.push_back(test.reach);
     candidateKept_.push_back(test.kept);
-    if (test.offloaded)
+    if (outcome == PairOutcome::Offloaded)
       prebuilt_.push_back(&offloaded_[offloadedSoFar++].manifold);
     else
       prebuilt_.push_back(test.kept ? &carriedManifolds_[i] : nullptr);

@@ -221,16 +221,24 @@ class World {
   // One candidate pair's narrow-phase answer. Pairs are tested in parallel,
   // each into its own slot, then gathered in pair order (gatherContacts), so
   // contacts, manifolds and counters come out as a serial pass makes them.
-  struct PairTest {
-    enum class Outcome { Skipped, BoundsRejected, Tested };
-    Outcome outcome = Outcome::Skipped;
+  // The outcome lives apart from the answer: most pairs end at the bounds, so
+  // their one byte is all they write and all the gather reads. (A whole
+  // answer per pair, written by one thread and read by another, was megabytes
+  // of cache lines crossing cores each step: on two threads the pair loop's
+  // work grew 1.8 times and the loop ran no faster than on one.)
+  enum class PairOutcome : std::uint8_t {
+    Skipped,
+    BoundsRejected,
+    Tested,
+    Offloaded,  // the collision offload answers it (testOffloadedPairs)
+  };
+  struct PairAnswer {  // written only for pairs tested or offloaded
     double reach = 0.0;
     ContactResult result;
-    ContactResult reversed;  // B-A, tested only with bruteForceBothOrders
-    bool offloaded = false;  // the collision offload answers it (testOffloadedPairs)
+    ContactResult reversed;                 // B-A, tested only with bruteForceBothOrders
     const ReusableContact* kept = nullptr;  // the last answer, carried to now (result and carriedManifolds_)
   };
-  void testPair(const BodyPair& pair, const StepContext& context, PairTest& test) const;
+  PairOutcome testPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer) const;
   void measureBodies(const StepContext& context);
   void testPairs(const StepContext& context);
   void testOffloadedPairs();
@@ -279,7 +287,8 @@ class World {
   std::shared_ptr<CollisionOffload> offload_;  // before broadPhase_, which it may have made
   std::unique_ptr<BroadPhase> broadPhase_;
   std::vector<BodyPair> pairs_;
-  std::vector<PairTest> pairTests_;          // per candidate pair, this pass (testPairs)
+  std::vector<PairOutcome> pairOutcomes_;    // per candidate pair, this pass (testPairs)
+  std::vector<PairAnswer> pairAnswers_;      // per candidate pair, for those tested
   std::vector<char> inSomePair_;             // per body, this pass (measureBodies)
   std::vector<char> dynamicInPair_;          // per body in a pair, this pass (measureBodies)
   std::vector<Aabb> tightBounds_;            // per body in a pair, this pass (measureBodies)
