@@ -18,7 +18,22 @@ namespace {
 // handing it to a thread (a pair test is ~1 us, a body's prediction ~0.1 us).
 constexpr std::size_t pairGrain = 32;
 constexpr std::size_t bodyGrain = 256;
+
 constexpr std::size_t staticRowGrain = 8;  // a row is up to n overlap tests
+
+// A body's tight box grown by its reach share and padded well past the
+// rounding of the exact test (which grows one box by the pair's reach), so
+// pairs that miss here also miss there: the outcome is the same either way.
+// A share that is not finite grows the box to everything and leaves the
+// pair to the exact test.
+Aabb paddedReachBounds(const Aabb& tight, double share) {
+  const double size = std::max(tight.min.cwiseAbs().maxCoeff(), tight.max.cwiseAbs().maxCoeff());
+  const double padded = share + 1e-9 * (1.0 + share + size);
+  if (!(std::isfinite(padded)))
+    return {Vec3::Constant(-std::numeric_limits<double>::infinity()),
+            Vec3::Constant(std::numeric_limits<double>::infinity())};
+  return tight.enlarged(padded);
+}
 
 std::unique_ptr<BroadPhase> makeBroadPhase(const WorldSettings& settings, const TaskSystem& tasks,
                                            CollisionOffload* offload) {
@@ -242,7 +257,9 @@ World::PairOutcome World::testPair(const BodyPair& pair, const StepContext& cont
   if (!dynamicInPair_[pair.a] && !dynamicInPair_[pair.b]) return PairOutcome::Skipped;
   // Fat boxes overlap long before the shapes can touch: when even the tight
   // boxes, grown by how far the pair can close this step, stay apart, the
-  // narrow phase has nothing to say.
+  // narrow phase has nothing to say. Most pairs miss by more than the two
+  // bodies' reach shares, which settles them without the pair's own reach.
+  if (!reachBounds_[pair.a].overlaps(reachBounds_[pair.b])) return PairOutcome::BoundsRejected;
   const double reach = solver_->contactReach(bodyReaches_[pair.a], bodyReaches_[pair.b], context);
   if (!tightBounds_[pair.a].enlarged(reach).overlaps(tightBounds_[pair.b])) return PairOutcome::BoundsRejected;
   answer.reach = reach;
@@ -274,6 +291,7 @@ void World::measureBodies(const StepContext& context) {
   for (const BodyPair& pair : pairs_) inSomePair_[pair.a] = inSomePair_[pair.b] = 1;
   tightBounds_.resize(bodies_.size());
   bodyReaches_.resize(bodies_.size());
+  reachBounds_.resize(bodies_.size());
   dynamicInPair_.resize(bodies_.size());
   tasks_->parallelFor(bodies_.size(), bodyGrain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t id = begin; id < end; ++id) {
@@ -281,6 +299,7 @@ void World::measureBodies(const StepContext& context) {
       dynamicInPair_[id] = bodies_[id].isDynamic() ? 1 : 0;
       tightBounds_[id] = bodies_[id].collider().worldBounds(bodies_[id].transform());
       bodyReaches_[id] = solver_->bodyReach(bodies_[id], context);
+      reachBounds_[id] = paddedReachBounds(tightBounds_[id], solver_->reachShare(bodyReaches_[id], context));
     }
   });
 }

@@ -293,6 +293,7 @@ class World {
   std::vector<char> dynamicInPair_;          // per body in a pair, this pass (measureBodies)
   std::vector<Aabb> tightBounds_;            // per body in a pair, this pass (measureBodies)
   std::vector<BodyReach> bodyReaches_;       // per body, this pass (measureBodies)
+  std::vector<Aabb> reachBounds_;            // tight box grown by the body's reach share, padded (measureBodies)
   std::vector<Contact> candidates_;          // tested pairs, for the solver (gatherContacts)
   std::vector<double> reaches_;              // their contactReach
   std::vector<OffloadRequest> offloadRequests_;  // this pass's offloaded pairs (testOffloadedPairs)

@@ -56,6 +56,11 @@ class ContactSolver {
   // finds once per body and pass: a body meets many candidate pairs.
   virtual BodyReach bodyReach(const RigidBody& body, const StepContext& step) const = 0;
   virtual double contactReach(const BodyReach& a, const BodyReach& b, const StepContext& step) const = 0;
+  // At least what one body adds to any pair's reach, so that, in exact
+  // arithmetic, contactReach(a, b) <= reachShare(a) + reachShare(b). World
+  // grows each body's box by its share once per pass: a pair whose grown
+  // boxes miss is out of reach without its own reach being worked out.
+  virtual double reachShare(const BodyReach& body, const StepContext& step) const = 0;
   double contactReach(const RigidBody& a, const RigidBody& b, const StepContext& step) const {
     return contactReach(bodyReach(a, step), bodyReach(b, step), step);
   }

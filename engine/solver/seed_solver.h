@@ -23,6 +23,7 @@ class SeedSolver final : public ContactSolver {
   PredictedMotion predictMotion(const RigidBody& body, const StepContext& step) const override;
   BodyReach bodyReach(const RigidBody&, const StepContext&) const override { return {}; }
   double contactReach(const BodyReach&, const BodyReach&, const StepContext&) const override { return reach_; }
+  double reachShare(const BodyReach&, const StepContext&) const override { return 0.5 * reach_; }
   double touchingGap() const override { return 0.0; }
   void clearContacts() override {}
   int addCandidate(const Contact&, const RigidBody&, const RigidBody&, double) override { return 0; }

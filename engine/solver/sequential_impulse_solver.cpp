@@ -142,6 +142,12 @@ double SequentialImpulseSolver::contactReach(const BodyReach& a, const BodyReach
   return 4.0 * settings_.linearSlop + closingSpeed * step.dt;
 }
 
+// Half the slops, and this body's own speed in place of the pair's closing
+// speed: |v_b - v_a| <= |v_a| + |v_b| covers the rest.
+double SequentialImpulseSolver::reachShare(const BodyReach& body, const StepContext& step) const {
+  return 2.0 * settings_.linearSlop + (body.linearVelocity.norm() + body.acceleration * step.dt + body.spin) * step.dt;
+}
+
 void SequentialImpulseSolver::beginStep(std::vector<RigidBody>&, const std::vector<bool>&, const StepContext&) {
   std::swap(previousManifolds_, manifolds_);
   manifolds_.clear();

@@ -49,6 +49,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   PredictedMotion predictMotion(const RigidBody& body, const StepContext& step) const override;
   BodyReach bodyReach(const RigidBody& body, const StepContext& step) const override;
   double contactReach(const BodyReach& a, const BodyReach& b, const StepContext& step) const override;
+  double reachShare(const BodyReach& body, const StepContext& step) const override;
   using ContactSolver::contactReach;
   double touchingGap() const override { return settings_.linearSlop; }
   void clearContacts() override;
