@@ -421,7 +421,9 @@ void SequentialImpulseSolver::planIsland(IslandWork& work, const std::vector<Con
       work.groups.push_back(packWideManifolds(&wide[i], count, manifolds, constraints_, solverBodies_));
     }
     colour.groupCount = work.groups.size() - colour.firstGroup;
+    work.singles.insert(work.singles.end(), colour.scalar.begin(), colour.scalar.end());
   }
+  work.singles.insert(work.singles.end(), work.overflow.begin(), work.overflow.end());
 }
 
 void SequentialImpulseSolver::forEach(std::size_t count, std::size_t grain,
@@ -735,15 +737,30 @@ void SequentialImpulseSolver::integratePositions(const std::vector<std::uint32_t
 
 // Poses change only when positions are integrated, once per substep, so the
 // gaps are measured then and shared by every sweep until the next move.
+// Gaps at the current poses, once per substep: a wide group's straight into
+// its lanes, a single manifold's into its points' constraints. (Every gap
+// went through its point's constraint and was gathered back into the lanes,
+// a cache line per point each substep; lanes past a manifold's points hold
+// 0, and their zero masses leave them out of the solve.)
 void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& manifolds, IslandWork& work) {
-  const std::vector<std::uint32_t>& ids = work.island.manifolds;
-  forEach(ids.size(), 256, [&](std::size_t i) {
-    const std::uint32_t m = ids[i];
+  forEach(work.groups.size(), 64, [&](std::size_t g) {
+    WideManifolds& group = work.groups[g];
+    alignas(64) double lanes[ContactManifold::maxPoints][simd::width] = {};
+    for (int lane = 0; lane < simd::width; ++lane) {
+      const std::uint32_t m = group.manifold[lane];
+      if (m == WideManifolds::empty) continue;
+      double gaps[ContactManifold::maxPoints];
+      manifoldGaps(manifolds[m], gaps);
+      for (int p = 0; p < manifolds[m].pointCount; ++p) lanes[p][lane] = gaps[p];
+    }
+    for (int p = 0; p < group.pointSlots; ++p) group.points[p].gap = simd::Lanes::load(lanes[p]);
+  });
+  forEach(work.singles.size(), 256, [&](std::size_t i) {
+    const std::uint32_t m = work.singles[i];
     double gaps[ContactManifold::maxPoints];
     manifoldGaps(manifolds[m], gaps);
     for (int p = 0; p < manifolds[m].pointCount; ++p) constraints_[m * ContactManifold::maxPoints + p].gap = gaps[p];
   });
-  forEach(work.groups.size(), 64, [&](std::size_t g) { loadWideGaps(work.groups[g], constraints_); });
 }
 
 void SequentialImpulseSolver::warmStart(std::vector<ContactManifold>& manifolds, IslandWork& work) {

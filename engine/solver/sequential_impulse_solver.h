@@ -90,6 +90,7 @@ class SequentialImpulseSolver final : public ContactSolver {
     std::vector<ColourWork> colours;
     std::vector<std::uint32_t> overflow;
     std::vector<WideManifolds> groups;
+    std::vector<std::uint32_t> singles;  // every manifold in no group: the colours' scalar ones and the overflow
     bool touchesKinematic = false;
     double largestPenetration = 0.0;
   };

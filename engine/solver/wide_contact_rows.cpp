@@ -172,7 +172,6 @@ void packPoint(WidePoint& wide, int lane, const PointConstraint& c, const Manifo
   setLane(wide.tangentMass[0], lane, c.tangentMass[0]);
   setLane(wide.tangentMass[1], lane, c.tangentMass[1]);
   setLane(wide.friction, lane, c.friction);
-  setLane(wide.gap, lane, c.gap);
   setLane(wide.largestImpulse, lane, c.largestImpulse);
   setLane(wide.normalImpulse, lane, point.normalImpulse);
   setLane(wide.tangentImpulse[0], lane, point.tangentImpulse[0]);
@@ -210,15 +209,6 @@ WideManifolds packWideManifolds(const std::uint32_t* members, int count, const s
     group.pointSlots = std::max(group.pointSlots, manifold.pointCount);
   }
   return group;
-}
-
-void loadWideGaps(WideManifolds& group, const std::vector<PointConstraint>& constraints) {
-  for (int p = 0; p < group.pointSlots; ++p) {
-    alignas(64) double gaps[lanes] = {};
-    for (int lane = 0; lane < lanes; ++lane)
-      if (group.manifold[lane] != WideManifolds::empty) gaps[lane] = constraints[group.manifold[lane] * slots + p].gap;
-    group.points[p].gap = Lanes::load(gaps);
-  }
 }
 
 void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies) {

@@ -51,9 +51,6 @@ WideManifolds packWideManifolds(const std::uint32_t* members, int count, const s
                                 const std::vector<PointConstraint>& constraints,
                                 const std::vector<SolverBody>& bodies);
 
-// The group's gaps, from `constraints` (measured there at the current poses).
-void loadWideGaps(WideManifolds& group, const std::vector<PointConstraint>& constraints);
-
 // Applies the impulses the group starts the substep with.
 void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies);
 
