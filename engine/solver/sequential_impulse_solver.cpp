@@ -418,7 +418,7 @@ void SequentialImpulseSolver::planIsland(IslandWork& work, const std::vector<Con
     colour.firstGroup = work.groups.size();
     for (std::size_t i = 0; i < wide.size(); i += simd::width) {
       const int count = static_cast<int>(std::min<std::size_t>(simd::width, wide.size() - i));
-      work.groups.push_back(packWideManifolds(&wide[i], count, manifolds, constraints_, solverBodies_));
+      work.groups.push_back(packWideManifolds(&wide[i], count, manifolds, constraints_, tangents_, solverBodies_));
     }
     colour.groupCount = work.groups.size() - colour.firstGroup;
     work.singles.insert(work.singles.end(), colour.scalar.begin(), colour.scalar.end());
@@ -648,6 +648,7 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
     body.rotation = source.orientation().toRotationMatrix();
   });
   constraints_.resize(manifolds.size() * ContactManifold::maxPoints);
+  tangents_.resize(manifolds.size());
   massScales_ = supportMassScales(manifolds);
   forEach(manifolds.size(), 256, [&](std::size_t m) { prepareManifold(bodies, manifolds[m], m); });
 }
@@ -663,7 +664,7 @@ void SequentialImpulseSolver::prepareManifold(const std::vector<RigidBody>& bodi
   const double inverseMassSum = inverseMassA + inverseMassB;
   const CombinedMaterial material =
       combineMaterials(a.material(), b.material(), settings.restitutionCombine(), settings.frictionCombine());
-  Vec3 tangents[2];
+  ManifoldTangents& tangents = tangents_[m];
   tangentBasis(manifold.normal, tangents[0], tangents[1]);
   const Vec3 directions[3] = {manifold.normal, tangents[0], tangents[1]};
   const Mat3 inverseInertiaA = scaleA * bodyA.inverseInertia, inverseInertiaB = scaleB * bodyB.inverseInertia;
@@ -677,8 +678,6 @@ void SequentialImpulseSolver::prepareManifold(const std::vector<RigidBody>& bodi
     const Vec3 middle = 0.5 * (point.pointA + point.pointB);
     c.armA = (apart ? point.pointA : middle) - a.position();
     c.armB = (apart ? point.pointB : middle) - b.position();
-    c.tangent[0] = tangents[0];
-    c.tangent[1] = tangents[1];
     for (int row = 0; row < 3; ++row) {
       c.crossA[row] = c.armA.cross(directions[row]);
       c.crossB[row] = c.armB.cross(directions[row]);
@@ -774,8 +773,8 @@ void SequentialImpulseSolver::warmStartManifold(ContactManifold& manifold, std::
     ManifoldPoint& point = manifold.points[p];
     const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
     applyNormal(manifold, c, point, point.normalImpulse);
-    applyRow(manifold, c, c.tangent[0], 1, point.tangentImpulse[0]);
-    applyRow(manifold, c, c.tangent[1], 2, point.tangentImpulse[1]);
+    applyRow(manifold, c, tangents_[m][0], 1, point.tangentImpulse[0]);
+    applyRow(manifold, c, tangents_[m][1], 2, point.tangentImpulse[1]);
   }
 }
 
@@ -914,7 +913,7 @@ void SequentialImpulseSolver::solveFriction(ContactManifold& manifold, std::size
     const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
     double tangentImpulse[2];
     for (int t = 0; t < 2; ++t)
-      tangentImpulse[t] = point.tangentImpulse[t] - c.tangentMass[t] * rowVelocity(manifold, c, c.tangent[t], t + 1);
+      tangentImpulse[t] = point.tangentImpulse[t] - c.tangentMass[t] * rowVelocity(manifold, c, tangents_[m][t], t + 1);
     const double limit = c.friction * point.normalImpulse;
     const double squared = tangentImpulse[0] * tangentImpulse[0] + tangentImpulse[1] * tangentImpulse[1];
     if (squared > limit * limit && squared > 0.0) {
@@ -922,8 +921,8 @@ void SequentialImpulseSolver::solveFriction(ContactManifold& manifold, std::size
       tangentImpulse[0] *= scale;
       tangentImpulse[1] *= scale;
     }
-    applyRow(manifold, c, c.tangent[0], 1, tangentImpulse[0] - point.tangentImpulse[0]);
-    applyRow(manifold, c, c.tangent[1], 2, tangentImpulse[1] - point.tangentImpulse[1]);
+    applyRow(manifold, c, tangents_[m][0], 1, tangentImpulse[0] - point.tangentImpulse[0]);
+    applyRow(manifold, c, tangents_[m][1], 2, tangentImpulse[1] - point.tangentImpulse[1]);
     point.tangentImpulse[0] = tangentImpulse[0];
     point.tangentImpulse[1] = tangentImpulse[1];
   }

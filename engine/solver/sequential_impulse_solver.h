@@ -168,6 +168,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   std::vector<SolverBody> solverBodies_;
   std::vector<MotionProperties> motionProperties_;  // per body in a manifold, from prepare
   std::vector<char> listed_;                        // per body: in a manifold this step (prepare)
+  std::vector<ManifoldTangents> tangents_;      // per manifold
   std::vector<PointConstraint> constraints_;      // maxPoints per manifold
   std::vector<double> touching_;                  // per manifold: largest separation that holds weight, m
   std::vector<bool> approaching_;                 // per manifold: every point still apart at the start

@@ -183,7 +183,7 @@ void packPoint(WidePoint& wide, int lane, const PointConstraint& c, const Manifo
 
 WideManifolds packWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
                                 const std::vector<PointConstraint>& constraints,
-                                const std::vector<SolverBody>& bodies) {
+                                const std::vector<ManifoldTangents>& tangents, const std::vector<SolverBody>& bodies) {
   WideManifolds group{};
   group.manifold.fill(WideManifolds::empty);
   group.bodyA.fill(WideManifolds::empty);
@@ -198,8 +198,8 @@ WideManifolds packWideManifolds(const std::uint32_t* members, int count, const s
     group.writableA[lane] = bodies[manifold.a].movable;
     group.writableB[lane] = bodies[manifold.b].movable;
     setLanes(group.direction[0], lane, manifold.normal);
-    setLanes(group.direction[1], lane, first.tangent[0]);
-    setLanes(group.direction[2], lane, first.tangent[1]);
+    setLanes(group.direction[1], lane, tangents[m][0]);
+    setLanes(group.direction[2], lane, tangents[m][1]);
     setLane(group.inverseMassA, lane, first.inverseMassA);
     setLane(group.inverseMassB, lane, first.inverseMassB);
     setLanes(group.linearMaskA, lane, bodies[manifold.a].linearMask);

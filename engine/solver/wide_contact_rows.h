@@ -46,10 +46,10 @@ struct WideManifolds {
 
 // Up to simd::width manifolds (indices into `manifolds`, sharing no movable
 // body) into one group, from their prepared constraints (maxPoints per
-// manifold) and their current impulses.
+// manifold), their tangents and their current impulses.
 WideManifolds packWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
                                 const std::vector<PointConstraint>& constraints,
-                                const std::vector<SolverBody>& bodies);
+                                const std::vector<ManifoldTangents>& tangents, const std::vector<SolverBody>& bodies);
 
 // Applies the impulses the group starts the substep with.
 void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies);
