@@ -18,7 +18,6 @@ namespace {
 // handing it to a thread (a pair test is ~1 us, a body's prediction ~0.1 us).
 constexpr std::size_t pairGrain = 32;
 constexpr std::size_t bodyGrain = 256;
-
 constexpr std::size_t staticRowGrain = 8;  // a row is up to n overlap tests
 
 // A body's tight box grown by its reach share and padded well past the

@@ -735,12 +735,10 @@ void SequentialImpulseSolver::integratePositions(const std::vector<std::uint32_t
 }
 
 // Poses change only when positions are integrated, once per substep, so the
-// gaps are measured then and shared by every sweep until the next move.
-// Gaps at the current poses, once per substep: a wide group's straight into
-// its lanes, a single manifold's into its points' constraints. (Every gap
-// went through its point's constraint and was gathered back into the lanes,
-// a cache line per point each substep; lanes past a manifold's points hold
-// 0, and their zero masses leave them out of the solve.)
+// gaps are measured then and shared by every sweep until the next move: a
+// wide group's straight into its lanes (lanes past a manifold's points hold
+// 0, and their zero masses leave them out of the solve), a single
+// manifold's into its points' constraints.
 void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& manifolds, IslandWork& work) {
   forEach(work.groups.size(), 64, [&](std::size_t g) {
     WideManifolds& group = work.groups[g];
