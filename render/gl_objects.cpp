@@ -12,6 +12,7 @@ void deleteVertexArray(GLuint name) { glDeleteVertexArrays(1, &name); }
 void deleteProgram(GLuint name) { glDeleteProgram(name); }
 void deleteFramebuffer(GLuint name) { glDeleteFramebuffers(1, &name); }
 void deleteRenderbuffer(GLuint name) { glDeleteRenderbuffers(1, &name); }
+void deleteTexture(GLuint name) { glDeleteTextures(1, &name); }
 }  // namespace detail
 
 namespace {
@@ -28,6 +29,7 @@ GlBuffer createBuffer() { return GlBuffer(generateName(glGenBuffers)); }
 GlVertexArray createVertexArray() { return GlVertexArray(generateName(glGenVertexArrays)); }
 GlFramebuffer createFramebuffer() { return GlFramebuffer(generateName(glGenFramebuffers)); }
 GlRenderbuffer createRenderbuffer() { return GlRenderbuffer(generateName(glGenRenderbuffers)); }
+GlTexture createTexture() { return GlTexture(generateName(glGenTextures)); }
 
 namespace {
 

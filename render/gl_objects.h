@@ -41,6 +41,7 @@ void deleteVertexArray(GLuint name);
 void deleteProgram(GLuint name);
 void deleteFramebuffer(GLuint name);
 void deleteRenderbuffer(GLuint name);
+void deleteTexture(GLuint name);
 }  // namespace detail
 
 using GlBuffer = GlName<detail::deleteBuffer>;
@@ -48,11 +49,13 @@ using GlVertexArray = GlName<detail::deleteVertexArray>;
 using GlProgram = GlName<detail::deleteProgram>;
 using GlFramebuffer = GlName<detail::deleteFramebuffer>;
 using GlRenderbuffer = GlName<detail::deleteRenderbuffer>;
+using GlTexture = GlName<detail::deleteTexture>;
 
 GlBuffer createBuffer();
 GlVertexArray createVertexArray();
 GlFramebuffer createFramebuffer();
 GlRenderbuffer createRenderbuffer();
+GlTexture createTexture();
 // Compiles and links; throws std::runtime_error with the info log on failure.
 GlProgram createProgram(const char* vertexSource, const char* fragmentSource, const std::string& label);
 // A compute shader program (GL 4.3); throws std::runtime_error with the info log on failure.

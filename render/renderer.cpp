@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -10,6 +11,7 @@
 #include "render/gl_context.h"
 #include "render/gpu_mesh.h"
 #include "render/mesh_cache.h"
+#include "render/outline_layer.h"
 #include "render/render_target.h"
 #include "render/shaders.h"
 #include "render/sphere_detail.h"
@@ -31,7 +33,9 @@ constexpr float kBackground[4] = {0.11f, 0.12f, 0.14f, 1.0f};
 constexpr int kConeSegments = 16;
 // A pixel left, right, up and down: a one-pixel outline round lines and cones.
 constexpr float kOutlineShifts[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
-constexpr int kOutlineCopies = 4;
+// The outline's pixel, a line's half width and its ends' rounding, with room
+// for float against double projections.
+constexpr double kFootprintMargin = 3;
 
 void validate(const RendererOptions& options) {
   if (options.width <= 0 || options.height <= 0 || options.width > kMaxDimension || options.height > kMaxDimension)
@@ -79,6 +83,16 @@ DepthRange depthRange(const debugdraw::Frame& frame, const Camera& camera) {
   return {std::max(nearest, farthest * 1e-4), farthest};
 }
 
+// Alpha stays 1 over the opaque background so PNGs are opaque.
+void blendOver() { glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA); }
+
+// The outline layer needs single-sample coverage; with MSAA the arrows keep
+// the four shifted dark copies.
+std::optional<OutlineLayer> outlineLayerFor(const RendererOptions& options) {
+  if (options.samples > 0 || options.outlineArrowsByCopies) return std::nullopt;
+  return std::optional<OutlineLayer>(std::in_place, options.width, options.height);
+}
+
 }  // namespace
 
 class Renderer::Impl {
@@ -96,12 +110,14 @@ class Renderer::Impl {
         spheres_(uploadSphereLevels()),
         cone_(uploadInstancedMesh(unitCone(kConeSegments), GL_TRIANGLES)),
         cubeEdges_(uploadInstancedMesh(unitCubeEdges(), GL_LINES)),
-        lines_(sizeof(ColoredVertex), {{0, 3, offsetof(ColoredVertex, position)}, {1, 4, offsetof(ColoredVertex, color)}}),
+        lines_(sizeof(ColoredVertex),
+               {{0, 3, offsetof(ColoredVertex, position)}, {1, 4, offsetof(ColoredVertex, color)}}),
         points_(sizeof(PointVertex), {{0, 3, offsetof(PointVertex, position)},
                                       {1, 1, offsetof(PointVertex, size)},
                                       {2, 4, offsetof(PointVertex, color)}}),
         texts_(sizeof(TextVertex), {{0, 2, offsetof(TextVertex, position)}, {1, 4, offsetof(TextVertex, color)}}),
-        target_(options.width, options.height, options.samples) {}
+        target_(options.width, options.height, options.samples),
+        outlineLayer_(outlineLayerFor(options)) {}
 
   // GL objects must die while their context is current.
   ~Impl() { context_->makeCurrent(); }
@@ -153,8 +169,7 @@ class Renderer::Impl {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glEnable(GL_BLEND);
-    // Alpha stays 1 over the opaque background so PNGs are opaque.
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    blendOver();
     glEnable(GL_PROGRAM_POINT_SIZE);
     // Flat normals (the cone's) come from a triangle's first vertex.
     glProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
@@ -244,28 +259,37 @@ class Renderer::Impl {
     points_.drawUploaded(GL_POINTS);
   }
 
-  // Shifted dark copies, then the arrows; heads are lit cones, culled
-  // to their front faces so a cone never draws over itself. Shafts and heads
-  // are uploaded once for the five passes.
+  // Arrow heads are lit cones, culled to their front faces so a cone never
+  // draws over itself. Shafts and heads are uploaded once for every pass.
   void drawArrows(const FrameBatches& batches, const Camera& camera, const Eigen::Matrix4f& viewProjection) {
     if (batches.arrowShafts.empty()) return;
-    glEnable(GL_CULL_FACE);
     lines_.upload(batches.arrowShafts);
     uploadInstances(cone_, batches.arrowHeads);
-    useProgram(flatSolid_, viewProjection);
     const Eigen::Vector3f light = lightDirection(camera);
+    useProgram(flatSolid_, viewProjection);
     glUniform3fv(glGetUniformLocation(flatSolid_.get(), "uLightDirection"), 1, light.data());
-    for (int shift = 0; shift <= kOutlineCopies; ++shift) {
-      const bool outline = shift < kOutlineCopies;
-      const float x = outline ? kOutlineShifts[shift][0] : 0.0f, y = outline ? kOutlineShifts[shift][1] : 0.0f;
-      useProgram(line_, viewProjection);
-      setOutline(line_, x, y, outline);
-      lines_.drawUploaded(GL_LINES);
-      useProgram(flatSolid_, viewProjection);
-      setOutline(flatSolid_, x, y, outline);
-      drawUploadedInstances(cone_);
+    glEnable(GL_CULL_FACE);
+    if (outlineLayer_) {
+      outlineLayer_->begin();
+      drawUploadedArrows(viewProjection, 0, 0, false);
+      glDisable(GL_CULL_FACE);
+      outlineLayer_->compositeOnto(
+          target_, arrowFootprint(batches, viewProjection, options_.width, options_.height, kFootprintMargin));
+      blendOver();
+      return;
     }
+    for (const auto& shift : kOutlineShifts) drawUploadedArrows(viewProjection, shift[0], shift[1], true);
+    drawUploadedArrows(viewProjection, 0, 0, false);
     glDisable(GL_CULL_FACE);
+  }
+
+  void drawUploadedArrows(const Eigen::Matrix4f& viewProjection, float x, float y, bool outline) {
+    useProgram(line_, viewProjection);
+    setOutline(line_, x, y, outline);
+    lines_.drawUploaded(GL_LINES);
+    useProgram(flatSolid_, viewProjection);
+    setOutline(flatSolid_, x, y, outline);
+    drawUploadedInstances(cone_);
   }
 
   void drawText(const FrameBatches& batches) {
@@ -285,6 +309,7 @@ class Renderer::Impl {
   VertexStream lines_, points_, texts_;
   MeshCache meshCache_;
   RenderTarget target_;
+  std::optional<OutlineLayer> outlineLayer_;
   RenderTimings timings_;
 };
 

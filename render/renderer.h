@@ -23,6 +23,10 @@ struct RendererOptions {
   // the draw time (see render/README.md for measurements).
   int samples = 0;
   Backend backend = Backend::OsMesa;
+  // Outline arrows with four shifted dark copies, as MSAA does, instead of the
+  // outline layer (render/outline_layer.h): the reference the layer is tested
+  // against, several times slower.
+  bool outlineArrowsByCopies = false;
 };
 
 // Where the last render() spent its time: flattening the frame into arrays

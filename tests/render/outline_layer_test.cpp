@@ -1,0 +1,134 @@
+// Arrows are outlined by laying a layer over the frame (render/outline_layer.h)
+// instead of drawing four shifted dark copies first. The copies are the
+// reference: the same pixels must come out, arrows byte for byte and outlines
+// where the copies put them, whether the footprint is a few tiles or, with
+// arrows reaching behind the eye, the whole image.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "render/renderer.h"
+#include "tests/render/test_pictures.h"
+#include "tests/support/render_test_support.h"
+
+namespace {
+
+namespace dd = physdbg::debugdraw;
+using Eigen::Vector3d;
+using physdbg::render::Camera;
+using physdbg::render::Image;
+using physdbg::render::Renderer;
+using physdbg::render::RendererOptions;
+using physdbg::render::testing::Pixel;
+using physdbg::render::testing::pixelAt;
+
+constexpr int kWidth = 320, kHeight = 240;
+// The outline layer's colour; the copies of arrow heads were lit, darker.
+constexpr Pixel kOutline{10, 10, 12, 255};
+
+bool isDark(const Pixel& pixel) { return pixel[0] <= 13 && pixel[1] <= 13 && pixel[2] <= 13; }
+
+// Coloured boxes to lie over, and arrows every way at random, some inside the
+// boxes, some crossing each other, some leaving the view.
+dd::Frame arrowCloud(unsigned seed, int arrows, double alpha) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(-1, 1), channel(0.2, 1);
+  dd::Frame frame;
+  for (int box = 0; box < 6; ++box)
+    frame.boxes.push_back({Vector3d(2 * unit(random), 2 * unit(random), unit(random)),
+                           Eigen::Quaterniond::Identity(),
+                           Vector3d(0.5, 0.4, 0.3),
+                           {float(channel(random)), float(channel(random)), float(channel(random)), 1}});
+  for (int arrow = 0; arrow < arrows; ++arrow) {
+    const Vector3d from(3.5 * unit(random), 2.6 * unit(random), 2 * unit(random));
+    const Vector3d along = Vector3d(unit(random), unit(random), unit(random)) * (0.05 + 0.8 * (unit(random) + 1));
+    frame.arrows.push_back(
+        {from, from + along, {float(channel(random)), float(channel(random)), float(channel(random)), float(alpha)}});
+  }
+  return frame;
+}
+
+Image render(const dd::Frame& frame, const Camera& camera, bool byCopies) {
+  RendererOptions options{kWidth, kHeight, 0};
+  options.outlineArrowsByCopies = byCopies;
+  return Renderer(options).render(frame, camera);
+}
+
+struct Comparison {
+  int arrowPixels = 0, outlinePixels = 0, other = 0;
+};
+
+// Pixels off the image's edge are left out: a copy shifted in from an arrow
+// just outside the view darkened the edge row, the layer has no such pixels.
+Comparison compareInside(const Image& layer, const Image& copies, const Image& withoutArrows) {
+  Comparison result;
+  for (int y = 1; y + 1 < kHeight; ++y)
+    for (int x = 1; x + 1 < kWidth; ++x) {
+      const Pixel got = pixelAt(layer, x, y), want = pixelAt(copies, x, y);
+      if (got == kOutline)
+        ++result.outlinePixels;
+      else if (got != pixelAt(withoutArrows, x, y))
+        ++result.arrowPixels;
+      if (got != want && !(got == kOutline && isDark(want))) ++result.other;
+    }
+  return result;
+}
+
+void expectSamePicture(const dd::Frame& frame, const Camera& camera, const std::string& name) {
+  const Image layer = render(frame, camera, false), copies = render(frame, camera, true);
+  dd::Frame bare = frame;
+  bare.arrows.clear();
+  const Comparison result = compareInside(layer, copies, render(bare, camera, false));
+  physdbg::render::testing::keepPicture(layer, name + "_layer.png");
+  physdbg::render::testing::keepPicture(copies, name + "_copies.png");
+  EXPECT_EQ(result.other, 0) << "pixels that differ from the shifted copies other than in the outline's shade";
+  EXPECT_GT(result.arrowPixels, 2000);
+  EXPECT_GT(result.outlinePixels, 1000);
+}
+
+TEST(OutlineLayer, OpaqueArrowsComeOutAsWithShiftedCopies) {
+  Camera camera;
+  camera.eye = {3, 2.5, 9};
+  expectSamePicture(arrowCloud(11, 400, 1.0), camera, "outline_cloud");
+}
+
+TEST(OutlineLayer, ArrowsReachingBehindTheEyeComeOutAsWithShiftedCopies) {
+  Camera camera;  // among the arrows: some start in front of the eye and end behind it
+  camera.eye = {0.3, 0.2, 1.2};
+  camera.target = {0, 0, -3};
+  expectSamePicture(arrowCloud(12, 400, 1.0), camera, "outline_behind_eye");
+}
+
+// A translucent arrow lies over its outline once; the copies overlapped and
+// darkened the pixels under it up to four times. Looked at from the front,
+// the shaft spans pixel columns 40 to 232, where the lit head starts.
+TEST(OutlineLayer, ATranslucentArrowLiesOverItsOutlineOnce) {
+  dd::Frame frame;
+  frame.arrows.push_back({{-1.5, 0, 0}, {1.5, 0, 0}, {1.0f, 1.0f, 1.0f, 0.5f}});
+  Camera camera;
+  camera.orthographic = true;
+  camera.orthoHeight = 3;
+  const Image image = render(frame, camera, false);
+  const Pixel background = pixelAt(render({}, camera, false), 0, 0);
+  auto over = [](double top, double alpha, int below) { return top * 255 * alpha + below * (1 - alpha); };
+  int outline = 0, shaft = 0, other = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < 225; ++x) {
+      const Pixel pixel = pixelAt(image, x, y);
+      if (pixel == background) continue;
+      bool isOutline = true, isShaft = true;
+      for (int c = 0; c < 3; ++c) {
+        const double outlined = over(kOutline[c] / 255.0, 0.5, background[c]);
+        isOutline = isOutline && std::abs(pixel[c] - outlined) <= 2;
+        isShaft = isShaft && std::abs(pixel[c] - over(1.0, 0.5, static_cast<int>(std::lround(outlined)))) <= 2;
+      }
+      outline += isOutline;
+      shaft += isShaft && !isOutline;
+      other += !isOutline && !isShaft;
+    }
+  EXPECT_GT(outline, 100);
+  EXPECT_GT(shaft, 100);
+  EXPECT_EQ(other, 0);
+}
+
+}  // namespace
