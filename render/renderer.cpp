@@ -89,7 +89,7 @@ void blendOver() { glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_
 // The outline layer needs single-sample coverage; with MSAA the arrows keep
 // the four shifted dark copies.
 std::optional<OutlineLayer> outlineLayerFor(const RendererOptions& options) {
-  if (options.samples > 0 || options.outlineArrowsByCopies) return std::nullopt;
+  if (options.samples > 0 || options.outlineMarkersByCopies) return std::nullopt;
   return std::optional<OutlineLayer>(std::in_place, options.width, options.height);
 }
 
@@ -248,15 +248,27 @@ class Renderer::Impl {
   }
 
   void drawPoints(const FrameBatches& batches, const Eigen::Matrix4f& viewProjection) {
+    if (batches.points.empty()) return;
     useProgram(point_, viewProjection);
     const GLint grow = glGetUniformLocation(point_.get(), "uGrowPixels");
+    const GLint ring = glGetUniformLocation(point_.get(), "uRing");
     glUniform1f(grow, 2.0f);  // a one-pixel ring
-    setOutline(point_, 0, 0, true);
     points_.upload(batches.points);
+    if (options_.outlineMarkersByCopies) {
+      glUniform1f(ring, 0.0f);
+      setOutline(point_, 0, 0, true);
+      points_.drawUploaded(GL_POINTS);
+      glUniform1f(grow, 0.0f);
+      setOutline(point_, 0, 0, false);
+      points_.drawUploaded(GL_POINTS);
+      return;
+    }
+    // Nothing after the markers tests depth, so the solids' depth can go.
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glUniform1f(ring, 1.0f);
     points_.drawUploaded(GL_POINTS);
-    glUniform1f(grow, 0.0f);
-    setOutline(point_, 0, 0, false);
-    points_.drawUploaded(GL_POINTS);
+    glDisable(GL_DEPTH_TEST);
   }
 
   // Arrow heads are lit cones, culled to their front faces so a cone never

@@ -23,10 +23,12 @@ struct RendererOptions {
   // the draw time (see render/README.md for measurements).
   int samples = 0;
   Backend backend = Backend::OsMesa;
-  // Outline arrows with four shifted dark copies, as MSAA does, instead of the
-  // outline layer (render/outline_layer.h): the reference the layer is tested
-  // against, several times slower.
-  bool outlineArrowsByCopies = false;
+  // Outline markers with dark copies drawn before them: four shifted copies of
+  // the arrows, as MSAA does, instead of the outline layer
+  // (render/outline_layer.h), and a grown copy of every point instead of one
+  // pass that draws a point and its ring. The reference the faster ways are
+  // tested against.
+  bool outlineMarkersByCopies = false;
 };
 
 // Where the last render() spent its time: flattening the frame into arrays

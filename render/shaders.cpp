@@ -83,6 +83,11 @@ const char* const kUnlitFragment =
     "out vec4 fragColor;\n"
     "void main() { fragColor = vColor; }\n";
 
+// A point's disc, grown by uGrowPixels for its dark ring. With uRing set one
+// draw gives both: fragments within the point's own size take its colour at
+// depth 0, the ring's the outline colour at depth 0.5, and with the depth
+// buffer cleared and LEQUAL a ring never covers any point's inside while a
+// later inside covers everything, as drawing every ring first did.
 const char* const kPointVertex =
     "#version 330 core\n"
     "layout(location = 0) in vec3 aPosition;\n"
@@ -91,8 +96,12 @@ const char* const kPointVertex =
     "uniform mat4 uViewProjection;\n" PHYSDBG_OUTLINE_INPUTS
     "uniform float uGrowPixels;\n"
     "out vec4 vColor;\n"
+    "out vec4 vRingColor;\n"
+    "out float vInside;\n" /* squared radius of the point's own disc, in pixels */
     "void main() {\n"
     "  vColor = outlined(aColor);\n"
+    "  vRingColor = vec4(0.04, 0.04, 0.05, aColor.a);\n"
+    "  vInside = 0.25 * aSize * aSize;\n"
     "  gl_PointSize = aSize + uGrowPixels;\n"
     "  gl_Position = uViewProjection * vec4(aPosition, 1.0);\n"
     // Pull towards the camera so a point on a slanted surface is not half buried.
@@ -102,11 +111,21 @@ const char* const kPointVertex =
 const char* const kPointFragment =
     "#version 330 core\n"
     "in vec4 vColor;\n"
+    "in vec4 vRingColor;\n"
+    "in float vInside;\n"
+    "uniform float uRing;\n"
+    "uniform float uGrowPixels;\n"
     "out vec4 fragColor;\n"
     "void main() {\n"
     "  vec2 offset = gl_PointCoord - vec2(0.5);\n"
     "  if (dot(offset, offset) > 0.25) discard;\n"
     "  fragColor = vColor;\n"
+    "  gl_FragDepth = 0.0;\n"
+    "  if (uRing == 0.0) return;\n"
+    "  vec2 pixels = offset * (sqrt(4.0 * vInside) + uGrowPixels);\n"
+    "  if (dot(pixels, pixels) <= vInside) return;\n"
+    "  fragColor = vRingColor;\n"
+    "  gl_FragDepth = 0.5;\n"
     "}\n";
 
 const char* const kTextVertex =

@@ -1,8 +1,10 @@
-// Arrows are outlined by laying a layer over the frame (render/outline_layer.h)
-// instead of drawing four shifted dark copies first. The copies are the
-// reference: the same pixels must come out, arrows byte for byte and outlines
-// where the copies put them, whether the footprint is a few tiles or, with
-// arrows reaching behind the eye, the whole image.
+// Markers' dark outlines are drawn the fast way: arrows laid over the frame
+// from a layer (render/outline_layer.h) instead of after four shifted dark
+// copies, points with their ring in one pass instead of after a grown dark
+// copy of each. The copies are the reference. Arrows must come out byte for
+// byte with their outline where the copies put it, whether the footprint is a
+// few tiles or, with arrows reaching behind the eye, the whole image; points
+// and rings byte for byte.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -50,7 +52,7 @@ dd::Frame arrowCloud(unsigned seed, int arrows, double alpha) {
 
 Image render(const dd::Frame& frame, const Camera& camera, bool byCopies) {
   RendererOptions options{kWidth, kHeight, 0};
-  options.outlineArrowsByCopies = byCopies;
+  options.outlineMarkersByCopies = byCopies;
   return Renderer(options).render(frame, camera);
 }
 
@@ -86,13 +88,13 @@ void expectSamePicture(const dd::Frame& frame, const Camera& camera, const std::
   EXPECT_GT(result.outlinePixels, 1000);
 }
 
-TEST(OutlineLayer, OpaqueArrowsComeOutAsWithShiftedCopies) {
+TEST(MarkerOutlines, OpaqueArrowsComeOutAsWithShiftedCopies) {
   Camera camera;
   camera.eye = {3, 2.5, 9};
   expectSamePicture(arrowCloud(11, 400, 1.0), camera, "outline_cloud");
 }
 
-TEST(OutlineLayer, ArrowsReachingBehindTheEyeComeOutAsWithShiftedCopies) {
+TEST(MarkerOutlines, ArrowsReachingBehindTheEyeComeOutAsWithShiftedCopies) {
   Camera camera;  // among the arrows: some start in front of the eye and end behind it
   camera.eye = {0.3, 0.2, 1.2};
   camera.target = {0, 0, -3};
@@ -102,7 +104,7 @@ TEST(OutlineLayer, ArrowsReachingBehindTheEyeComeOutAsWithShiftedCopies) {
 // A translucent arrow lies over its outline once; the copies overlapped and
 // darkened the pixels under it up to four times. Looked at from the front,
 // the shaft spans pixel columns 40 to 232, where the lit head starts.
-TEST(OutlineLayer, ATranslucentArrowLiesOverItsOutlineOnce) {
+TEST(MarkerOutlines, ATranslucentArrowLiesOverItsOutlineOnce) {
   dd::Frame frame;
   frame.arrows.push_back({{-1.5, 0, 0}, {1.5, 0, 0}, {1.0f, 1.0f, 1.0f, 0.5f}});
   Camera camera;
@@ -129,6 +131,68 @@ TEST(OutlineLayer, ATranslucentArrowLiesOverItsOutlineOnce) {
   EXPECT_GT(outline, 100);
   EXPECT_GT(shaft, 100);
   EXPECT_EQ(other, 0);
+}
+
+// Points of every size over bodies and over each other, some centred on
+// pixel centres and corners, where a disc's edge passes through pixel centres.
+dd::Frame pointCloud(unsigned seed, int points) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(-1, 1), channel(0.2, 1);
+  std::uniform_int_distribution<int> size(1, 14);
+  dd::Frame frame = arrowCloud(seed, 0, 1.0);
+  for (int point = 0; point < points; ++point) {
+    Vector3d at(3.5 * unit(random), 2.6 * unit(random), 2 * unit(random));
+    if (point % 4 == 0) at = Vector3d(std::round(at.x() * 16) / 16, std::round(at.y() * 16) / 16, 0);
+    frame.points.push_back({at,
+                            float(size(random)) + (point % 3 == 0 ? 0.5f : 0.0f),
+                            {float(channel(random)), float(channel(random)), float(channel(random)), 1}});
+  }
+  return frame;
+}
+
+// A pixel whose centre lies on a disc's edge (to rounding) may fall either
+// side of it: the ring and the point are sized from different sprites. So
+// where the two differ, one's colour must be in the other a pixel away.
+bool nearby(const Image& reference, int x, int y, const Pixel& want) {
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int nx = x + dx, ny = y + dy;
+      if (nx >= 0 && ny >= 0 && nx < kWidth && ny < kHeight && pixelAt(reference, nx, ny) == want) return true;
+    }
+  return false;
+}
+
+TEST(MarkerOutlines, PointsAndTheirRingsInOnePassComeOutAsWithGrownCopies) {
+  Camera camera;
+  camera.orthographic = true;  // 40 px per metre: 1/16 m steps land on pixel corners and centres
+  camera.orthoHeight = 6;
+  const dd::Frame frame = pointCloud(13, 1500);
+  const Image onePass = render(frame, camera, false), copies = render(frame, camera, true);
+  physdbg::render::testing::keepPicture(onePass, "points_one_pass.png");
+  int different = 0, unexplained = 0, ring = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const Pixel got = pixelAt(onePass, x, y);
+      ring += isDark(got);
+      if (got == pixelAt(copies, x, y)) continue;
+      ++different;
+      unexplained += !nearby(copies, x, y, got) && !nearby(onePass, x, y, pixelAt(copies, x, y));
+    }
+  EXPECT_EQ(unexplained, 0);
+  EXPECT_LT(different, 200) << "of 76800; points off the pixel grid alone differ in one pixel";
+  EXPECT_GT(ring, 2000);
+}
+
+TEST(MarkerOutlines, PointsOffThePixelGridComeOutAsWithGrownCopies) {
+  Camera camera;
+  camera.eye = {1, 2, 9};
+  dd::Frame frame = pointCloud(14, 1500);
+  for (auto& point : frame.points) point.position.z() += 0.001;  // off every grid
+  const Image onePass = render(frame, camera, false), copies = render(frame, camera, true);
+  int different = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) different += pixelAt(onePass, x, y) != pixelAt(copies, x, y);
+  EXPECT_LE(different, 3);
 }
 
 }  // namespace
