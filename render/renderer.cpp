@@ -30,7 +30,6 @@ double secondsBetween(Clock::time_point start, Clock::time_point end) {
 constexpr int kMaxDimension = 16384;
 constexpr int kMaxSamples = 16;
 constexpr float kBackground[4] = {0.11f, 0.12f, 0.14f, 1.0f};
-constexpr int kConeSegments = 16;
 // A pixel left, right, up and down: a one-pixel outline round lines and cones.
 constexpr float kOutlineShifts[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
 // The outline's pixel, a line's half width and its ends' rounding, with room
@@ -108,7 +107,8 @@ class Renderer::Impl {
         text_(createProgram(shaders::kTextVertex, shaders::kUnlitFragment, "text")),
         cube_(uploadInstancedMesh(unitCube(), GL_TRIANGLES)),
         spheres_(uploadSphereLevels()),
-        cone_(uploadInstancedMesh(unitCone(kConeSegments), GL_TRIANGLES)),
+        coarseCone_(uploadInstancedMesh(unitCone(kCoarseConeSegments), GL_TRIANGLES)),
+        fineCone_(uploadInstancedMesh(unitCone(kFineConeSegments), GL_TRIANGLES)),
         cubeEdges_(uploadInstancedMesh(unitCubeEdges(), GL_LINES)),
         lines_(sizeof(ColoredVertex),
                {{0, 3, offsetof(ColoredVertex, position)}, {1, 4, offsetof(ColoredVertex, color)}}),
@@ -272,11 +272,14 @@ class Renderer::Impl {
   }
 
   // Arrow heads are lit cones, culled to their front faces so a cone never
-  // draws over itself. Shafts and heads are uploaded once for every pass.
+  // draws over itself; small ones coarser, drawn before the others. Shafts
+  // and heads are uploaded once for every pass.
   void drawArrows(const FrameBatches& batches, const Camera& camera, const Eigen::Matrix4f& viewProjection) {
     if (batches.arrowShafts.empty()) return;
     lines_.upload(batches.arrowShafts);
-    uploadInstances(cone_, batches.arrowHeads);
+    const ConesByDetail heads = splitConesByDetail(batches.arrowHeads, camera, options_.height);
+    uploadInstances(coarseCone_, heads.coarse);
+    uploadInstances(fineCone_, heads.fine);
     const Eigen::Vector3f light = lightDirection(camera);
     useProgram(flatSolid_, viewProjection);
     glUniform3fv(glGetUniformLocation(flatSolid_.get(), "uLightDirection"), 1, light.data());
@@ -301,7 +304,8 @@ class Renderer::Impl {
     lines_.drawUploaded(GL_LINES);
     useProgram(flatSolid_, viewProjection);
     setOutline(flatSolid_, x, y, outline);
-    drawUploadedInstances(cone_);
+    drawUploadedInstances(coarseCone_);
+    drawUploadedInstances(fineCone_);
   }
 
   void drawText(const FrameBatches& batches) {
@@ -317,7 +321,7 @@ class Renderer::Impl {
   GlProgram solid_, flatSolid_, wire_, line_, point_, text_;
   InstancedMesh cube_;
   std::vector<InstancedMesh> spheres_;  // one per detail level
-  InstancedMesh cone_, cubeEdges_;
+  InstancedMesh coarseCone_, fineCone_, cubeEdges_;
   VertexStream lines_, points_, texts_;
   MeshCache meshCache_;
   RenderTarget target_;

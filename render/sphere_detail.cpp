@@ -14,24 +14,48 @@ int sphereDetailLevel(double radiusPixels) {
   return static_cast<int>(kSphereSegments.size()) - 1;
 }
 
+namespace {
+
+// An instance's radius (scale.x) round its translation, in pixels.
+class RadiusOnScreen {
+ public:
+  RadiusOnScreen(const Camera& camera, int heightPixels)
+      : camera_(camera),
+        eye_(camera.eye - camera.target),  // instances are relative to the target
+        forward_(-eye_.normalized()),
+        halfHeight_(0.5 * heightPixels),
+        focalPixels_(halfHeight_ / std::tan(camera.fovYDegrees * std::numbers::pi / 360.0)) {}
+
+  double operator()(const Instance& instance) const {
+    const double radius = instance.scale[0];
+    if (camera_.orthographic) return radius * halfHeight_ / (0.5 * camera_.orthoHeight);
+    const Eigen::Vector3d center(instance.translation[0], instance.translation[1], instance.translation[2]);
+    const double depth = (center - eye_).dot(forward_);
+    return depth > radius ? radius * focalPixels_ / depth : 1e9;  // camera inside or close: finest
+  }
+
+ private:
+  const Camera& camera_;
+  Eigen::Vector3d eye_, forward_;
+  double halfHeight_, focalPixels_;
+};
+
+}  // namespace
+
 std::array<std::vector<Instance>, kSphereSegments.size()> splitByDetail(const std::vector<Instance>& instances,
                                                                          const Camera& camera, int heightPixels) {
   std::array<std::vector<Instance>, kSphereSegments.size()> levels;
-  const Eigen::Vector3d eye = camera.eye - camera.target;  // instances are relative to the target
-  const Eigen::Vector3d forward = -eye.normalized();
-  const double halfHeight = 0.5 * heightPixels;
-  const double focalPixels = halfHeight / std::tan(camera.fovYDegrees * std::numbers::pi / 360.0);
-  for (const Instance& instance : instances) {
-    const double radius = instance.scale[0];
-    double radiusPixels = radius * halfHeight / (0.5 * camera.orthoHeight);
-    if (!camera.orthographic) {
-      const Eigen::Vector3d center(instance.translation[0], instance.translation[1], instance.translation[2]);
-      const double depth = (center - eye).dot(forward);
-      radiusPixels = depth > radius ? radius * focalPixels / depth : 1e9;  // camera inside or close: finest
-    }
-    levels[sphereDetailLevel(radiusPixels)].push_back(instance);
-  }
+  const RadiusOnScreen radiusPixels(camera, heightPixels);
+  for (const Instance& instance : instances) levels[sphereDetailLevel(radiusPixels(instance))].push_back(instance);
   return levels;
+}
+
+ConesByDetail splitConesByDetail(const std::vector<Instance>& heads, const Camera& camera, int heightPixels) {
+  ConesByDetail split;
+  const RadiusOnScreen radiusPixels(camera, heightPixels);
+  for (const Instance& head : heads)
+    (radiusPixels(head) <= kCoarseConeRadiusPixels ? split.coarse : split.fine).push_back(head);
+  return split;
 }
 
 }  // namespace physdbg::render

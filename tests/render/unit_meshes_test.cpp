@@ -111,5 +111,29 @@ TEST(SphereDetail, CoarsestLevelWithinThreeQuartersOfAPixel) {
   EXPECT_EQ(sphereDetailLevel(1e9), static_cast<int>(kSphereSegments.size()) - 1);
 }
 
+// Orthographic, 10 m over 200 px: 20 px per metre.
+TEST(ConeDetail, SmallHeadsAreCoarseInFrameOrderAndLargeOnesFine) {
+  Camera camera;
+  camera.orthographic = true;
+  camera.orthoHeight = 10;
+  std::vector<Instance> heads;
+  for (double radius : {0.1, 0.5, 0.25, 0.31, 0.29, 2.0}) {  // 2, 10, 5, 6.2, 5.8 and 40 px
+    Instance head{};
+    head.scale[0] = static_cast<float>(radius);
+    head.translation[0] = static_cast<float>(heads.size());  // its place in the frame
+    heads.push_back(head);
+  }
+  const ConesByDetail split = splitConesByDetail(heads, camera, 200);
+  auto places = [](const std::vector<Instance>& list) {
+    std::vector<float> out;
+    for (const Instance& head : list) out.push_back(head.translation[0]);
+    return out;
+  };
+  EXPECT_EQ(places(split.coarse), (std::vector<float>{0, 2, 4}));
+  EXPECT_EQ(places(split.fine), (std::vector<float>{1, 3, 5}));
+  // The coarse cone's silhouette within half a pixel of a circle at the limit.
+  EXPECT_LE(kCoarseConeRadiusPixels * (1 - std::cos(std::numbers::pi / kCoarseConeSegments)), 0.5);
+}
+
 }  // namespace
 }  // namespace physdbg::render
