@@ -135,11 +135,20 @@ Measured measure(const std::vector<Pose>& poses, int repeats, const Query& query
   return m;
 }
 
+constexpr double kCcdTolerance = 1e-4;  // libccd's default EPA and MPR tolerance, metres
+
 // One record per libccd method: ours and the peer on the same poses.
 void emitRecords(const std::string& name, const std::vector<Pose>& poses, int repeats, int referencePoses,
                  const BenchSink& sink) {
   const Measured ours = measure(poses, repeats, [](const Pose& p) {
     const ContactResult r = collide(*p.colliderA, p.a, *p.colliderB, p.b);
+    return std::pair{r.depth, std::isfinite(r.depth) && isFinite(r.normal)};
+  });
+  // Work-precision: ours stopping where libccd's EPA does (1e-4 m).
+  const Measured loose = measure(poses, repeats, [](const Pose& p) {
+    NarrowPhaseOptions options;
+    options.relativeTolerance = kCcdTolerance / p.size;
+    const ContactResult r = collide(*p.colliderA, p.a, *p.colliderB, p.b, options);
     return std::pair{r.depth, std::isfinite(r.depth) && isFinite(r.normal)};
   });
   for (CcdMethod method : {CcdMethod::GjkEpa, CcdMethod::Mpr}) {
@@ -157,6 +166,9 @@ void emitRecords(const std::string& name, const std::vector<Pose>& poses, int re
     record["ours_nan"] = ours.nan;
     record["peer_nan"] = theirs.nan;
     record["reference_poses"] = referencePoses;
+    record["ours_at_peer_tolerance_ms"] = loose.ms;
+    record["ours_at_peer_tolerance_err"] = loose.maxError;
+    record["ratio_at_peer_tolerance"] = peer ? nlohmann::json(loose.ms / theirs.ms) : nlohmann::json();
     if (!ours.depths.empty()) {  // NaN becomes null in JSON
       record["ours_depths"] = ours.depths;
       record["peer_depths"] = theirs.depths;
