@@ -87,9 +87,8 @@ void blendOver() { glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_
 
 // The outline layer needs single-sample coverage; with MSAA the arrows keep
 // the four shifted dark copies.
-std::optional<OutlineLayer> outlineLayerFor(const RendererOptions& options) {
-  if (options.samples > 0 || options.outlineMarkersByCopies) return std::nullopt;
-  return std::optional<OutlineLayer>(std::in_place, options.width, options.height);
+bool usesOutlineLayer(const RendererOptions& options) {
+  return options.samples == 0 && !options.outlineMarkersByCopies;
 }
 
 }  // namespace
@@ -116,8 +115,7 @@ class Renderer::Impl {
                                       {1, 1, offsetof(PointVertex, size)},
                                       {2, 4, offsetof(PointVertex, color)}}),
         texts_(sizeof(TextVertex), {{0, 2, offsetof(TextVertex, position)}, {1, 4, offsetof(TextVertex, color)}}),
-        target_(options.width, options.height, options.samples),
-        outlineLayer_(outlineLayerFor(options)) {}
+        target_(options.width, options.height, options.samples) {}
 
   // GL objects must die while their context is current.
   ~Impl() { context_->makeCurrent(); }
@@ -284,7 +282,10 @@ class Renderer::Impl {
     useProgram(flatSolid_, viewProjection);
     glUniform3fv(glGetUniformLocation(flatSolid_.get(), "uLightDirection"), 1, light.data());
     glEnable(GL_CULL_FACE);
-    if (outlineLayer_) {
+    if (usesOutlineLayer(options_)) {
+      // Made with the first arrows: a renderer that never draws one (a large
+      // image of solids) does not hold a second image's worth of memory.
+      if (!outlineLayer_) outlineLayer_.emplace(options_.width, options_.height);
       outlineLayer_->begin();
       drawUploadedArrows(viewProjection, 0, 0, false);
       glDisable(GL_CULL_FACE);
