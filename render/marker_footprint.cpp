@@ -47,8 +47,10 @@ class TileMask {
   }
 
  private:
+  // Clamped before the conversion: a point just in front of the eye plane
+  // projects past any int.
   static int tileOf(double pixel, int tiles) {
-    return std::clamp(static_cast<int>(std::floor(pixel / kFootprintTilePixels)), 0, tiles - 1);
+    return static_cast<int>(std::clamp(std::floor(pixel / kFootprintTilePixels), 0.0, tiles - 1.0));
   }
 
   int width_, height_, columns_, rows_;
@@ -107,7 +109,7 @@ std::vector<PixelRect> arrowFootprint(const FrameBatches& batches, const Eigen::
     bounds.add(positionOf(batches.arrowShafts[2 * arrow].position));
     bounds.add(positionOf(batches.arrowShafts[2 * arrow + 1].position));
     addHead(batches.arrowHeads[arrow], bounds);
-    if (bounds.behindEye()) return {{0, 0, width, height}};
+    if (bounds.behindEye() || !bounds.min().allFinite() || !bounds.max().allFinite()) return {{0, 0, width, height}};
     mask.mark(bounds.min().x() - marginPixels, bounds.min().y() - marginPixels, bounds.max().x() + marginPixels,
               bounds.max().y() + marginPixels);
   }

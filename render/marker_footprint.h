@@ -24,8 +24,9 @@ inline constexpr int kFootprintTilePixels = 16;
 // rasterise to and its neighbours. The bounds are the projections of each
 // shaft's ends and of each head's apex and the corners of the square round
 // its base (the cone lies in their convex hull). With any of those points at
-// or behind the eye (w <= 0, drawn through depth clamping) it answers the
-// whole image.
+// or behind the eye (w <= 0, drawn through depth clamping), or projected so
+// close to the eye plane that its pixel is not finite, it answers the whole
+// image.
 std::vector<PixelRect> arrowFootprint(const FrameBatches& batches, const Eigen::Matrix4f& viewProjection, int width,
                                       int height, double marginPixels);
 

@@ -6,8 +6,10 @@
 // single-sample layer, which is then laid over the frame: a pixel the markers
 // cover shows them, a pixel beside one (left, right, above or below) shows the
 // outline colour. That is exactly what the union of the four one-pixel shifted
-// copies covered, so the picture is unchanged but at the image's border, where
-// a marker just outside the view no longer leaves its outline on the edge row.
+// copies covered, so opaque markers' pixels are unchanged and the outline
+// covers the same pixels, in one colour (the copies of lit heads were 3-10
+// levels darker), but at the image's border, where a marker just outside the
+// view no longer leaves its outline on the edge row.
 #include <vector>
 
 #include "render/gl_objects.h"

@@ -86,7 +86,8 @@ DepthRange depthRange(const debugdraw::Frame& frame, const Camera& camera) {
 void blendOver() { glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA); }
 
 // The outline layer needs single-sample coverage; with MSAA the arrows keep
-// the four shifted dark copies.
+// the four shifted dark copies (and points their grown copies: a pixel the
+// point covers only in part must keep its share of the ring under it).
 bool usesOutlineLayer(const RendererOptions& options) {
   return options.samples == 0 && !options.outlineMarkersByCopies;
 }
@@ -252,7 +253,7 @@ class Renderer::Impl {
     const GLint ring = glGetUniformLocation(point_.get(), "uRing");
     glUniform1f(grow, 2.0f);  // a one-pixel ring
     points_.upload(batches.points);
-    if (options_.outlineMarkersByCopies) {
+    if (options_.outlineMarkersByCopies || options_.samples > 0) {  // MSAA: as before, sample by sample
       glUniform1f(ring, 0.0f);
       setOutline(point_, 0, 0, true);
       points_.drawUploaded(GL_POINTS);

@@ -23,8 +23,8 @@ struct RendererOptions {
   // the draw time (see render/README.md for measurements).
   int samples = 0;
   Backend backend = Backend::OsMesa;
-  // Outline markers with dark copies drawn before them: four shifted copies of
-  // the arrows, as MSAA does, instead of the outline layer
+  // Outline markers with dark copies drawn before them, as MSAA does: four
+  // shifted copies of the arrows instead of the outline layer
   // (render/outline_layer.h), and a grown copy of every point instead of one
   // pass that draws a point and its ring. The reference the faster ways are
   // tested against.

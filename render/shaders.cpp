@@ -12,17 +12,22 @@ namespace physdbg::render::shaders {
   "  return v + q.w * t + cross(q.xyz, t);\n"    \
   "}\n"
 
+// Markers' dark outline colour (render/outline_layer.cpp lays the bytes
+// llvmpipe's blending made of it, 10, 10, 12).
+#define PHYSDBG_OUTLINE_RGB "vec3(0.04, 0.04, 0.05)"
+
 // Markers (arrows, points) are drawn first in a dark outline colour shifted
 // by a pixel in each direction, then in their own colour. Both uniforms are
 // zero for every other draw.
-#define PHYSDBG_OUTLINE_INPUTS                                          \
-  "uniform vec2 uShift;\n"   /* clip-space offset of one outline copy */ \
-  "uniform float uOutline;\n" /* 1: draw in the outline colour */        \
-  "vec4 outlined(vec4 color) {\n"                                      \
-  "  return mix(color, vec4(0.04, 0.04, 0.05, color.a), uOutline);\n"  \
-  "}\n"                                                                \
-  "vec4 shifted(vec4 position) {\n"                                    \
-  "  return vec4(position.xy + uShift * position.w, position.zw);\n"   \
+#define PHYSDBG_OUTLINE_INPUTS                                            \
+  "uniform vec2 uShift;\n"    /* clip-space offset of one outline copy */ \
+  "uniform float uOutline;\n" /* 1: draw in the outline colour */         \
+  "vec4 outlined(vec4 color) {\n"                                         \
+  "  return mix(color, vec4(" PHYSDBG_OUTLINE_RGB                         \
+  ", color.a), uOutline);\n"                                              \
+  "}\n"                                                                   \
+  "vec4 shifted(vec4 position) {\n"                                       \
+  "  return vec4(position.xy + uShift * position.w, position.zw);\n"      \
   "}\n"
 
 // The solid program, its normal smooth (spheres, capsules) or `flat` (the
@@ -87,7 +92,9 @@ const char* const kUnlitFragment =
 // draw gives both: fragments within the point's own size take its colour at
 // depth 0, the ring's the outline colour at depth 0.5, and with the depth
 // buffer cleared and LEQUAL a ring never covers any point's inside while a
-// later inside covers everything, as drawing every ring first did.
+// later inside covers everything, as drawing every ring first did (for
+// opaque points: a translucent point's inside no longer shows a later point's
+// ring through it, and its own ring is no longer under it).
 const char* const kPointVertex =
     "#version 330 core\n"
     "layout(location = 0) in vec3 aPosition;\n"
@@ -100,7 +107,8 @@ const char* const kPointVertex =
     "out float vInside;\n" /* squared radius of the point's own disc, in pixels */
     "void main() {\n"
     "  vColor = outlined(aColor);\n"
-    "  vRingColor = vec4(0.04, 0.04, 0.05, aColor.a);\n"
+    "  vRingColor = vec4(" PHYSDBG_OUTLINE_RGB
+    ", aColor.a);\n"
     "  vInside = 0.25 * aSize * aSize;\n"
     "  gl_PointSize = aSize + uGrowPixels;\n"
     "  gl_Position = uViewProjection * vec4(aPosition, 1.0);\n"
@@ -141,6 +149,7 @@ const char* const kTextVertex =
 
 #undef PHYSDBG_INSTANCE_INPUTS
 #undef PHYSDBG_OUTLINE_INPUTS
+#undef PHYSDBG_OUTLINE_RGB
 #undef PHYSDBG_SOLID_VERTEX
 #undef PHYSDBG_SOLID_FRAGMENT
 

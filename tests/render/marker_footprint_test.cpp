@@ -110,6 +110,34 @@ TEST(ArrowFootprint, IsTheWholeImageWhenAnArrowReachesBehindTheEye) {
   EXPECT_EQ(rects[0].y1, kHeight);
 }
 
+// An arrow whose end is a hair in front of the eye plane (w ~ 6e-11) while
+// its shaft starts on screen: the end projects 1e12 pixels out, past any
+// int, and the footprint must still stay in the image. Built by hand with
+// floats that hold the hair exactly (the eye is at z = 2^-10, the end at
+// 2^-10 - 2^-34), the head pointing away from the eye so no corner is behind it.
+TEST(ArrowFootprint, StaysInTheImageForAnArrowEndingJustInFrontOfTheEye) {
+  physdbg::render::Camera camera;
+  camera.eye = {0, 0, std::ldexp(1.0, -10)};
+  const View view = viewOf(camera);
+  const float nearEye = static_cast<float>(std::ldexp(1.0, -10) - std::ldexp(1.0, -34));
+  for (float side : {1.0f, -1.0f}) {
+    physdbg::render::FrameBatches batches;
+    batches.arrowShafts.push_back({{0.1f * side, 0.05f, -1}, {1, 1, 1, 1}});
+    batches.arrowShafts.push_back({{0.5f * side, 0.25f, nearEye}, {1, 1, 1, 1}});
+    physdbg::render::Instance head{};
+    head.translation[0] = 0.5f * side, head.translation[1] = 0.25f, head.translation[2] = nearEye;
+    head.rotation[0] = -std::sqrt(0.5f), head.rotation[3] = std::sqrt(0.5f);  // y to -z: away from the eye
+    head.scale[0] = head.scale[1] = head.scale[2] = 1e-3f;
+    batches.arrowHeads.push_back(head);
+    const auto rects = physdbg::render::arrowFootprint(batches, view.viewProjection, kWidth, kHeight, 3);
+    ASSERT_FALSE(rects.empty());
+    for (const PixelRect& rect : rects) {
+      EXPECT_TRUE(rect.x0 >= 0 && rect.x0 < rect.x1 && rect.x1 <= kWidth) << rect.x0 << " " << rect.x1;
+      EXPECT_TRUE(rect.y0 >= 0 && rect.y0 < rect.y1 && rect.y1 <= kHeight) << rect.y0 << " " << rect.y1;
+    }
+  }
+}
+
 TEST(ArrowFootprint, IsEmptyForArrowsOutOfView) {
   physdbg::render::Camera camera;
   const View view = viewOf(camera);

@@ -200,4 +200,20 @@ TEST(MarkerOutlines, PointsOffThePixelGridComeOutAsWithGrownCopies) {
   EXPECT_LE(different, 3);
 }
 
+// Multisampled, markers keep the copies drawn first: the layer needs single
+// coverage, and a point's ring stays under the samples its edge pixels share.
+TEST(MarkerOutlines, MultisampledMarkersKeepTheCopies) {
+  Camera camera;
+  camera.eye = {3, 2.5, 9};
+  dd::Frame frame = arrowCloud(15, 60, 1.0);
+  const dd::Frame points = pointCloud(16, 200);
+  frame.points = points.points;
+  RendererOptions options{kWidth, kHeight, 4};
+  const Image multisampled = Renderer(options).render(frame, camera);
+  options.outlineMarkersByCopies = true;
+  EXPECT_EQ(multisampled.rgba, Renderer(options).render(frame, camera).rgba);
+  options.samples = 0;
+  EXPECT_NE(multisampled.rgba, Renderer(options).render(frame, camera).rgba) << "the samples must show";
+}
+
 }  // namespace
