@@ -85,11 +85,11 @@ DepthRange depthRange(const debugdraw::Frame& frame, const Camera& camera) {
 // Alpha stays 1 over the opaque background so PNGs are opaque.
 void blendOver() { glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA); }
 
-// The outline layer needs single-sample coverage; with MSAA the arrows keep
-// the four shifted dark copies (and points their grown copies: a pixel the
-// point covers only in part must keep its share of the ring under it).
-bool usesOutlineLayer(const RendererOptions& options) {
-  return options.samples == 0 && !options.outlineMarkersByCopies;
+// Markers outlined by dark copies drawn first, as asked or with MSAA: the
+// arrows' outline layer needs single-sample coverage, and a pixel a point
+// covers only in part must keep its share of the ring under it.
+bool outlinesByCopies(const RendererOptions& options) {
+  return options.samples > 0 || options.outlineMarkersByCopies;
 }
 
 }  // namespace
@@ -253,7 +253,7 @@ class Renderer::Impl {
     const GLint ring = glGetUniformLocation(point_.get(), "uRing");
     glUniform1f(grow, 2.0f);  // a one-pixel ring
     points_.upload(batches.points);
-    if (options_.outlineMarkersByCopies || options_.samples > 0) {  // MSAA: as before, sample by sample
+    if (outlinesByCopies(options_)) {
       glUniform1f(ring, 0.0f);
       setOutline(point_, 0, 0, true);
       points_.drawUploaded(GL_POINTS);
@@ -283,7 +283,7 @@ class Renderer::Impl {
     useProgram(flatSolid_, viewProjection);
     glUniform3fv(glGetUniformLocation(flatSolid_.get(), "uLightDirection"), 1, light.data());
     glEnable(GL_CULL_FACE);
-    if (usesOutlineLayer(options_)) {
+    if (!outlinesByCopies(options_)) {
       // Made with the first arrows: a renderer that never draws one (a large
       // image of solids) does not hold a second image's worth of memory.
       if (!outlineLayer_) outlineLayer_.emplace(options_.width, options_.height);
