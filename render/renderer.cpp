@@ -88,9 +88,7 @@ void blendOver() { glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_
 // Markers outlined by dark copies drawn first, as asked or with MSAA: the
 // arrows' outline layer needs single-sample coverage, and a pixel a point
 // covers only in part must keep its share of the ring under it.
-bool outlinesByCopies(const RendererOptions& options) {
-  return options.samples > 0 || options.outlineMarkersByCopies;
-}
+bool outlinesByCopies(const RendererOptions& options) { return options.samples > 0 || options.outlineMarkersByCopies; }
 
 }  // namespace
 
