@@ -46,14 +46,6 @@ Eigen::Matrix4d pseudoInverse(const Eigen::Matrix4d& matrix) {
   return eigen.eigenvectors() * inverse.asDiagonal() * eigen.eigenvectors().transpose();
 }
 
-// 1 / (J M^-1 J^T) of one row, from the row's cross and turn vectors: the
-// turn is what the row's impulse does to the spin, so a locked axis (masked
-// out of the turn) adds no give, as it adds no motion.
-double rowMass(double inverseMassSum, const PointConstraint& c, int row) {
-  const double k = inverseMassSum + c.crossA[row].dot(c.turnA[row]) + c.crossB[row].dot(c.turnB[row]);
-  return k > 0.0 ? 1.0 / k : 0.0;
-}
-
 }  // namespace
 
 // Every point's current gap, from its anchors on both bodies, in the normal's
@@ -70,12 +62,6 @@ void SequentialImpulseSolver::manifoldGaps(const ContactManifold& manifold,
     const ManifoldPoint& point = manifold.points[p];
     gaps[p] = centres + (normalInB.dot(point.localB) - normalInA.dot(point.localA));
   }
-}
-
-inline Vec3 SequentialImpulseSolver::relativeVelocity(const ContactManifold& manifold, const PointConstraint& c) const {
-  const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-  return (b.motion.linearVelocity + b.motion.angularVelocity.cross(c.armB)) -
-         (a.motion.linearVelocity + a.motion.angularVelocity.cross(c.armA));
 }
 
 inline double SequentialImpulseSolver::rowVelocity(const ContactManifold& manifold, const PointConstraint& c,
@@ -289,7 +275,7 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
                                                          const StepContext& step) {
   tasks_ = step.tasks;
   prepare(bodies, movable, manifolds);
-  prepareApproaches(manifolds, step.gravity, step.dt);
+  prepareApproaches(bodies, manifolds, step.gravity, step.dt);
   // Touching, for holding weight: within the slop, or within a tenth of the
   // smaller body for bodies not much bigger than the slop.
   touching_.resize(manifolds.size());
@@ -308,7 +294,7 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
     const ContactIsland& island = islands[i];
     kinematic[i] = touchesKinematic(bodies, manifolds, island);
     const bool calm = !kinematic[i] && (restsAlone(manifolds, island) || restsTogether(manifolds, island));
-    substeps[i] = chooseSubsteps(manifolds, island, loads, g, step, calm);
+    substeps[i] = chooseSubsteps(bodies, manifolds, island, loads, g, step, calm);
     if (!settings_.warmStarting) return;
     rescaleWarmStart(manifolds, island, movable, substeps[i].h);
     for (std::uint32_t m : island.manifolds) seedNewContact(manifolds[m], loads[m], touching_[m], g, substeps[i].h);
@@ -392,38 +378,45 @@ std::vector<SequentialImpulseSolver::IslandWork> SequentialImpulseSolver::batchI
   return batches;
 }
 
-// One batch of islands, start to end: colours, the solve, the figures.
+// One batch of islands, start to end: colours, constraints, the solve, the
+// figures. Kinematic neighbours are set back to their start-of-step motion
+// first: an earlier batch may have moved one through its substeps.
 void SequentialImpulseSolver::runBatch(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                        std::vector<ContactManifold>& manifolds, IslandWork& work) {
-  planIsland(work, manifolds, movable);
-  solveIsland(bodies, manifolds, work);
+  const std::vector<std::uint32_t> kinematic =
+      work.touchesKinematic ? kinematicNeighbours(bodies, manifolds, work.island) : std::vector<std::uint32_t>{};
+  planIsland(bodies, manifolds, movable, work);
+  solveIsland(bodies, manifolds, work, kinematic);
   for (std::uint32_t id : work.island.bodies) lastSubstep_[id] = work.substeps.h;
   work.largestPenetration = largestPenetration(manifolds, work.island);
 }
 
-// Colours, and each colour's manifolds packed simd::width to a group (the
-// speculative manifolds solved all points together stay single).
-void SequentialImpulseSolver::planIsland(IslandWork& work, const std::vector<ContactManifold>& manifolds,
-                                         const std::vector<bool>& movable) {
+// Colours, each colour's manifolds simd::width to a group (the speculative
+// manifolds solved all points together stay single), then every
+// constraint, packed into its group's lanes or kept for its single manifold.
+void SequentialImpulseSolver::planIsland(const std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
+                                         const std::vector<bool>& movable, IslandWork& work) {
   ConstraintColouring colouring = colourConstraints(manifolds, work.island.manifolds, movable);
   work.overflow = std::move(colouring.overflow);
   work.colours.assign(colouring.colours.size(), ColourWork{});
-  work.groups.reserve(work.island.manifolds.size() / simd::width + colouring.colours.size());
-  std::vector<std::uint32_t> wide;
+  std::vector<std::uint32_t> wideMembers;  // every group's manifolds, group after group
+  std::vector<std::size_t> groupStarts;    // where each group's begin in wideMembers, then the end
+  wideMembers.reserve(work.island.manifolds.size());
+  groupStarts.reserve(work.island.manifolds.size() / simd::width + colouring.colours.size() + 1);
   for (std::size_t c = 0; c < colouring.colours.size(); ++c) {
     ColourWork& colour = work.colours[c];
-    wide.clear();
+    const std::size_t first = wideMembers.size();
     for (std::uint32_t m : colouring.colours[c])
-      (settings_.wideContacts && !approaching_[m] ? wide : colour.scalar).push_back(m);
-    colour.firstGroup = work.groups.size();
-    for (std::size_t i = 0; i < wide.size(); i += simd::width) {
-      const int count = static_cast<int>(std::min<std::size_t>(simd::width, wide.size() - i));
-      work.groups.push_back(packWideManifolds(&wide[i], count, manifolds, constraints_, tangents_, solverBodies_));
-    }
-    colour.groupCount = work.groups.size() - colour.firstGroup;
+      (settings_.wideContacts && !approaching_[m] ? wideMembers : colour.scalar).push_back(m);
+    colour.firstGroup = groupStarts.size();
+    for (std::size_t i = first; i < wideMembers.size(); i += simd::width) groupStarts.push_back(i);
+    colour.groupCount = groupStarts.size() - colour.firstGroup;
     work.singles.insert(work.singles.end(), colour.scalar.begin(), colour.scalar.end());
   }
+  groupStarts.push_back(wideMembers.size());
   work.singles.insert(work.singles.end(), work.overflow.begin(), work.overflow.end());
+  work.groups.resize(groupStarts.size() - 1);
+  buildBatchConstraints(bodies, manifolds, work, wideMembers, groupStarts);
 }
 
 void SequentialImpulseSolver::forEach(std::size_t count, std::size_t grain,
@@ -453,11 +446,9 @@ void SequentialImpulseSolver::runColours(IslandWork& work, const std::function<v
 }
 
 void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
-                                          IslandWork& work) {
+                                          IslandWork& work, const std::vector<std::uint32_t>& kinematic) {
   const ContactIsland& island = work.island;
   const SubstepContext& substeps = work.substeps;
-  const std::vector<std::uint32_t> kinematic =
-      work.touchesKinematic ? kinematicNeighbours(bodies, manifolds, island) : std::vector<std::uint32_t>{};
   measureGaps(manifolds, work);
   for (int substep = 0; substep < substeps.count; ++substep) {
     integrateVelocities(island, substeps.h);
@@ -469,7 +460,7 @@ void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::v
     measureGaps(manifolds, work);
     solve(manifolds, work, false, substep % 2 == 0);
   }
-  for (const WideManifolds& group : work.groups) storeWideImpulses(group, manifolds, constraints_);
+  for (const WideManifolds& group : work.groups) storeWideImpulses(group, manifolds, constraints_, constrained_);
   applyRestitution(manifolds, island);
   for (std::uint32_t id : island.bodies) bodies[id].setMotion(solverBodies_[id].motion);
 }
@@ -534,7 +525,8 @@ void SequentialImpulseSolver::updateCalmTimes(std::size_t bodyCount, double dt) 
 // calmSubsteps, at the frequency they allow (at most the settings'). One
 // whose loads need a stiffer contact than the settings' is not calm: a heavy
 // load carried down a chain of contacts needs the full substeps.
-SubstepContext SequentialImpulseSolver::chooseSubsteps(const std::vector<ContactManifold>& manifolds,
+SubstepContext SequentialImpulseSolver::chooseSubsteps(const std::vector<RigidBody>& bodies,
+                                                       const std::vector<ContactManifold>& manifolds,
                                                        const ContactIsland& island, const std::vector<double>& loads,
                                                        double gravity, const StepContext& step, bool calm) const {
   const SolverSettings& settings = settings_;
@@ -542,12 +534,14 @@ SubstepContext SequentialImpulseSolver::chooseSubsteps(const std::vector<Contact
   const int full = std::max(settings.substeps, 1);
   const int most = std::max(settings.maxSubsteps, full);
   double hertz = settings.contactHertz;
+  const double fewest = std::clamp(settings.calmSubsteps, 1, full);
+  // Every loaded frequency up to `enough` gives the same substeps below.
+  const double enough = calm ? std::min(hertz, fewest / (4.0 * dt)) : hertz;
   const double loaded = hertz > 0.0 && settings.restingOverlap > 0.0 && most > full
-                            ? loadedHertz(manifolds, island, loads, gravity)
+                            ? loadedHertz(bodies, manifolds, island, loads, gravity, enough)
                             : 0.0;
   if (calm && loaded <= hertz) {
     const double needed = std::ceil(4.0 * loaded * dt - 1e-9);
-    const double fewest = std::clamp(settings.calmSubsteps, 1, full);
     const int count = static_cast<int>(std::clamp(needed, fewest, static_cast<double>(full)));
     return substepContext(step, count, std::min(hertz, 0.25 * count / dt), settings.dampingRatio);
   }
@@ -565,22 +559,64 @@ SubstepContext SequentialImpulseSolver::chooseSubsteps(const std::vector<Contact
 // carried last step (carriedForce). The second sees a light body squeezed
 // sideways, say between a heavy pile and a wall; weights are steadier than
 // last step's impulses, so they decide wherever they can.
-double SequentialImpulseSolver::loadedHertz(const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
-                                            const std::vector<double>& loads, double gravity) const {
+//
+// The effective masses need each point's normal row, which is built here
+// (the batches build the rest later). A bound that needs none comes first
+// (manifoldDemand): when even it stays within `enough`, which the caller
+// treats like any lower frequency, it is the answer; otherwise a manifold
+// whose bound cannot beat the largest exact demand so far is skipped.
+double SequentialImpulseSolver::loadedHertz(const std::vector<RigidBody>& bodies,
+                                            const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
+                                            const std::vector<double>& loads, double gravity, double enough) const {
+  const auto hertzOf = [](double demand) { return std::sqrt(demand) / (2.0 * std::numbers::pi); };
+  double bound = 0.0;
+  for (std::uint32_t m : island.manifolds)
+    bound = std::max(bound, manifoldDemand(bodies, manifolds, m, loads, gravity, true));
+  if (hertzOf(bound) <= enough) return hertzOf(bound);
   double demand = 0.0;
-  for (std::uint32_t m : island.manifolds) {
-    const ContactManifold& manifold = manifolds[m];
-    const int touching = touchingPoints(manifold, touching_[m]);
-    if (touching == 0) continue;
-    const double force = (loads[m] > 0.0 ? loads[m] * gravity : carriedForce(manifold)) / touching;
-    if (!(force > 0.0)) continue;
-    const double allowed = allowedOverlap(settings_, bodySize(manifold));
+  for (std::uint32_t m : island.manifolds)
+    if (!(manifoldDemand(bodies, manifolds, m, loads, gravity, true) <= demand))
+      demand = std::max(demand, manifoldDemand(bodies, manifolds, m, loads, gravity, false));
+  return hertzOf(demand);
+}
+
+// force / mass / allowed at the manifold's most demanding touching point (0
+// where it holds nothing), or with `bound`, an upper bound of it that builds
+// no row: 1 / mass = J M^-1 J^T is at most the inverse masses plus, per body,
+// |arm|^2 times its inverse inertia's largest absolute row sum (|arm x n| <=
+// |arm|; a symmetric matrix stretches no vector by more than that sum).
+double SequentialImpulseSolver::manifoldDemand(const std::vector<RigidBody>& bodies,
+                                               const std::vector<ContactManifold>& manifolds, std::uint32_t m,
+                                               const std::vector<double>& loads, double gravity, bool bound) const {
+  const ContactManifold& manifold = manifolds[m];
+  const int touching = touchingPoints(manifold, touching_[m]);
+  if (touching == 0) return 0.0;
+  const double force = (loads[m] > 0.0 ? loads[m] * gravity : carriedForce(manifold)) / touching;
+  if (!(force > 0.0)) return 0.0;
+  const double allowed = allowedOverlap(settings_, bodySize(manifold));
+  const ManifoldFrame frame = manifoldFrame(bodies, manifold, m);
+  double demand = 0.0;
+  if (bound) {
+    const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
+    const auto [scaleA, scaleB] = massScales_[m];
+    double armA = 0.0, armB = 0.0;
     for (int p = 0; p < manifold.pointCount; ++p) {
-      const double mass = constraints_[m * ContactManifold::maxPoints + p].normalMass;
-      if (mass > 0.0) demand = std::max(demand, force / mass / allowed);
+      PointConstraint c;
+      buildRows(frame, manifold, p, 0, c);
+      armA = std::max(armA, c.armA.squaredNorm());
+      armB = std::max(armB, c.armB.squaredNorm());
     }
+    const double give =
+        frame.inverseMassSum + armA * scaleA * a.inverseInertiaBound + armB * scaleB * b.inverseInertiaBound;
+    // The margin covers the rounding of the exact sum.
+    return force * give * (1.0 + 1e-6) / allowed;
   }
-  return std::sqrt(demand) / (2.0 * std::numbers::pi);
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    PointConstraint c;
+    buildRows(frame, manifold, p, 1, c);
+    if (c.normalMass > 0.0) demand = std::max(demand, force / c.normalMass / allowed);
+  }
+  return demand;
 }
 
 // The force (N) a manifold held through last step's final substep: the
@@ -636,6 +672,7 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
     body.movable = movable[id];
     body.inverseMass = movable[id] ? source.inverseMass() : 0.0;
     body.inverseInertia = movable[id] ? source.worldInverseInertia() : Mat3::Zero();
+    body.inverseInertiaBound = body.inverseInertia.cwiseAbs().rowwise().sum().maxCoeff();
     for (int axis = 0; axis < 3; ++axis) {
       body.linearMask[axis] = source.lockTranslation()[axis] ? 0.0 : 1.0;
       body.angularMask[axis] = source.lockRotation()[axis] ? 0.0 : 1.0;
@@ -647,56 +684,21 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
     body.size = extents[1];
     body.rotation = source.orientation().toRotationMatrix();
   });
+  // Room for every manifold's constraints; only the batches' single and
+  // bouncing manifolds write theirs (sequential_impulse_prepare.cpp).
   constraints_.resize(manifolds.size() * ContactManifold::maxPoints);
+  constrained_.assign(manifolds.size(), 0);
   tangents_.resize(manifolds.size());
   massScales_ = supportMassScales(manifolds);
-  forEach(manifolds.size(), 256, [&](std::size_t m) { prepareManifold(bodies, manifolds[m], m); });
-}
-
-void SequentialImpulseSolver::prepareManifold(const std::vector<RigidBody>& bodies, ContactManifold& manifold,
-                                              std::size_t m) {
-  const SolverSettings& settings = settings_;
-  const std::pair<double, double> scale = massScales_[m];
-  const RigidBody &a = bodies[manifold.a], &b = bodies[manifold.b];
-  const SolverBody &bodyA = solverBodies_[manifold.a], &bodyB = solverBodies_[manifold.b];
-  const auto [scaleA, scaleB] = scale;
-  const double inverseMassA = scaleA * bodyA.inverseMass, inverseMassB = scaleB * bodyB.inverseMass;
-  const double inverseMassSum = inverseMassA + inverseMassB;
-  const CombinedMaterial material =
-      combineMaterials(a.material(), b.material(), settings.restitutionCombine(), settings.frictionCombine());
-  ManifoldTangents& tangents = tangents_[m];
-  tangentBasis(manifold.normal, tangents[0], tangents[1]);
-  const Vec3 directions[3] = {manifold.normal, tangents[0], tangents[1]};
-  const Mat3 inverseInertiaA = scaleA * bodyA.inverseInertia, inverseInertiaB = scaleB * bodyB.inverseInertia;
-  for (int p = 0; p < manifold.pointCount; ++p) {
-    ManifoldPoint& point = manifold.points[p];
-    PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-    // Touching or overlapping, both bodies push at the midpoint. A
-    // speculative point may still be metres from the other body; there
-    // each pushes at its own surface, or friction gets a long lever.
-    const bool apart = point.separation > settings.linearSlop;
-    const Vec3 middle = 0.5 * (point.pointA + point.pointB);
-    c.armA = (apart ? point.pointA : middle) - a.position();
-    c.armB = (apart ? point.pointB : middle) - b.position();
-    for (int row = 0; row < 3; ++row) {
-      c.crossA[row] = c.armA.cross(directions[row]);
-      c.crossB[row] = c.armB.cross(directions[row]);
-      c.turnA[row] = (inverseInertiaA * c.crossA[row]).cwiseProduct(bodyA.angularMask);
-      c.turnB[row] = (inverseInertiaB * c.crossB[row]).cwiseProduct(bodyB.angularMask);
+  forEach(manifolds.size(), 256, [&](std::size_t m) {
+    ContactManifold& manifold = manifolds[m];
+    tangentBasis(manifold.normal, tangents_[m][0], tangents_[m][1]);
+    for (int p = 0; p < manifold.pointCount; ++p) {
+      ManifoldPoint& point = manifold.points[p];
+      point.stepNormalImpulse = 0.0;
+      if (!settings_.warmStarting) point.normalImpulse = point.tangentImpulse[0] = point.tangentImpulse[1] = 0.0;
     }
-    c.inverseMassA = inverseMassA;
-    c.inverseMassB = inverseMassB;
-    c.normalMass = rowMass(inverseMassSum, c, 0);
-    for (int t = 0; t < 2; ++t) c.tangentMass[t] = rowMass(inverseMassSum, c, t + 1);
-    const Vec3 relative = relativeVelocity(manifold, c);
-    c.approachVelocity = relative.dot(manifold.normal);
-    const double slidingSpeed = (relative - c.approachVelocity * manifold.normal).norm();
-    c.friction = slidingSpeed < settings.stickingSpeed ? material.staticFriction : material.dynamicFriction;
-    c.restitution = c.approachVelocity < -settings.restitutionThreshold ? material.restitution : 0.0;
-    c.largestImpulse = 0.0;
-    point.stepNormalImpulse = 0.0;
-    if (!settings.warmStarting) point.normalImpulse = point.tangentImpulse[0] = point.tangentImpulse[1] = 0.0;
-  }
+  });
 }
 
 void SequentialImpulseSolver::integrateVelocities(const ContactIsland& island, double h) {
@@ -847,41 +849,49 @@ bool SequentialImpulseSolver::solveApproachTogether(ContactManifold& manifold, s
 // the soft contacts that follow absorb it, and the manifold joins the SIMD
 // lanes: a pyramid's neighbours, a hair apart side by side, are most of the
 // manifolds still apart, and they barely move.
-void SequentialImpulseSolver::prepareApproaches(const std::vector<ContactManifold>& manifolds, const Vec3& gravity,
+void SequentialImpulseSolver::prepareApproaches(const std::vector<RigidBody>& bodies,
+                                                const std::vector<ContactManifold>& manifolds, const Vec3& gravity,
                                                 double dt) {
   constexpr double slowApproach = 0.1;  // m/s
-  approaching_.assign(manifolds.size(), false);
+  approaching_.assign(manifolds.size(), 0);
   approachInverse_.resize(manifolds.size());
   approachMass_.resize(manifolds.size());
-  for (std::size_t m = 0; m < manifolds.size(); ++m) {
+  forEach(manifolds.size(), 256, [&](std::size_t m) {
     const ContactManifold& manifold = manifolds[m];
-    if (manifold.pointCount < 2) continue;
+    if (manifold.pointCount < 2) return;
     bool apart = true;
     for (int p = 0; p < manifold.pointCount; ++p) apart = apart && manifold.points[p].separation > 0.0;
-    if (!apart) continue;
+    if (!apart) return;
     const Vec3& normal = manifold.normal;
-    // Closing speed at the fastest point, plus what gravity may add this step.
+    // Closing speed at the fastest point, plus what gravity may add this
+    // step. The speed along the normal needs the arms alone.
+    const ManifoldFrame frame = manifoldFrame(bodies, manifold, m);
+    PointConstraint rows[ContactManifold::maxPoints];
     double closing = std::abs(gravity.dot(normal)) * dt;
     double fastest = 0.0;
-    for (int p = 0; p < manifold.pointCount; ++p)
-      fastest = std::max(fastest, -rowVelocity(manifold, constraints_[m * ContactManifold::maxPoints + p], normal, 0));
+    for (int p = 0; p < manifold.pointCount; ++p) {
+      buildRows(frame, manifold, p, 0, rows[p]);
+      rows[p].crossA[0] = rows[p].armA.cross(normal);
+      rows[p].crossB[0] = rows[p].armB.cross(normal);
+      fastest = std::max(fastest, -rowVelocity(manifold, rows[p], normal, 0));
+    }
     closing += fastest;
-    if (!(closing > slowApproach)) continue;
+    if (!(closing > slowApproach)) return;
+    for (int p = 0; p < manifold.pointCount; ++p) buildRows(frame, manifold, p, 1, rows[p]);
     const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-    const PointConstraint& first = constraints_[m * ContactManifold::maxPoints];
+    const PointConstraint& first = rows[0];
     const double linear = first.inverseMassA * normal.cwiseProduct(a.linearMask).dot(normal) +
                           first.inverseMassB * normal.cwiseProduct(b.linearMask).dot(normal);
     Eigen::Matrix4d mass = Eigen::Matrix4d::Zero();
     for (int i = 0; i < manifold.pointCount; ++i)
       for (int j = 0; j < manifold.pointCount; ++j) {
-        const PointConstraint& ci = constraints_[m * ContactManifold::maxPoints + i];
-        const PointConstraint& cj = constraints_[m * ContactManifold::maxPoints + j];
+        const PointConstraint &ci = rows[i], &cj = rows[j];
         mass(i, j) = linear + ci.crossA[0].dot(cj.turnA[0]) + ci.crossB[0].dot(cj.turnB[0]);
       }
     approachMass_[m] = mass;
     approachInverse_[m] = pseudoInverse(mass);
-    approaching_[m] = true;
-  }
+    approaching_[m] = 1;
+  });
 }
 
 // One sweep over every point: the normal constraint (soft push-out while
@@ -931,6 +941,8 @@ void SequentialImpulseSolver::solveFriction(ContactManifold& manifold, std::size
 // A speculative point bounces on the step it would have hit.
 void SequentialImpulseSolver::applyRestitution(std::vector<ContactManifold>& manifolds, const ContactIsland& island) {
   for (std::uint32_t m : island.manifolds) {
+    // A wide manifold keeps its constraints only if it may bounce.
+    if (!constrained_[m]) continue;
     ContactManifold& manifold = manifolds[m];
     for (int p = 0; p < manifold.pointCount; ++p) {
       ManifoldPoint& point = manifold.points[p];

@@ -25,8 +25,9 @@
 // over the world's threads, then the few that fit no colour one by one.
 // Batches run in parallel too (an island touching a kinematic body, which it
 // moves through its own substeps, is a batch of its own; those take turns).
-// Nothing depends on how work is split: any thread count gives the same
-// result bit for bit.
+// Each batch builds its own constraint rows once it knows its groups,
+// straight into the lanes (sequential_impulse_prepare.cpp). Nothing depends
+// on how work is split: any thread count gives the same result bit for bit.
 #include <functional>
 #include <vector>
 
@@ -100,11 +101,15 @@ class SequentialImpulseSolver final : public ContactSolver {
   bool restsTogether(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
   void updateCalmTimes(std::size_t bodyCount, double dt);
   // calm: the island starts from SolverSettings::calmSubsteps.
-  SubstepContext chooseSubsteps(const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
-                                const std::vector<double>& loads, double gravity, const StepContext& step,
-                                bool calm) const;
-  double loadedHertz(const std::vector<ContactManifold>& manifolds, const ContactIsland& island,
-                     const std::vector<double>& loads, double gravity) const;
+  SubstepContext chooseSubsteps(const std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds,
+                                const ContactIsland& island, const std::vector<double>& loads, double gravity,
+                                const StepContext& step, bool calm) const;
+  // Exact above `enough`; at or below it, any value up to `enough`.
+  double loadedHertz(const std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds,
+                     const ContactIsland& island, const std::vector<double>& loads, double gravity,
+                     double enough) const;
+  double manifoldDemand(const std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds,
+                        std::uint32_t m, const std::vector<double>& loads, double gravity, bool bound) const;
   double carriedForce(const ContactManifold& manifold) const;
   double bodySize(const ContactManifold& manifold) const;
   void rescaleWarmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
@@ -116,8 +121,11 @@ class SequentialImpulseSolver final : public ContactSolver {
                                        const std::vector<char>& kinematic) const;
   void runBatch(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                 std::vector<ContactManifold>& manifolds, IslandWork& work);
-  void planIsland(IslandWork& work, const std::vector<ContactManifold>& manifolds, const std::vector<bool>& movable);
-  void solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds, IslandWork& work);
+  void planIsland(const std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
+                  const std::vector<bool>& movable, IslandWork& work);
+  // `kinematic`: the kinematic bodies the batch touches (kinematicNeighbours).
+  void solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds, IslandWork& work,
+                   const std::vector<std::uint32_t>& kinematic);
   // body(i) for i in [0, count), spread over the world's threads when there
   // is enough work; each i must write only what it owns.
   void forEach(std::size_t count, std::size_t grain, const std::function<void(std::size_t)>& body) const;
@@ -137,8 +145,30 @@ class SequentialImpulseSolver final : public ContactSolver {
   void measureGaps(const std::vector<ContactManifold>& manifolds, IslandWork& work);
   void warmStart(std::vector<ContactManifold>& manifolds, IslandWork& work);
   void warmStartManifold(ContactManifold& manifold, std::size_t m);
-  void prepareManifold(const std::vector<RigidBody>& bodies, ContactManifold& manifold, std::size_t m);
-  void prepareApproaches(const std::vector<ContactManifold>& manifolds, const Vec3& gravity, double dt);
+  // Constraint rows (sequential_impulse_prepare.cpp): what a manifold's
+  // points share, one point's rows [0, rows), a whole manifold's
+  // constraints into out[0, pointCount), its normal rows alone, and a
+  // batch's (wideMembers[groupStarts[g], groupStarts[g + 1]) are group g's
+  // manifolds).
+  struct ManifoldFrame {
+    Vec3 positionA, positionB;
+    Vec3 directions[3];                     // the normal, then the two tangents
+    Mat3 inverseInertiaA, inverseInertiaB;  // as scaled for the contact
+    double inverseMassA = 0, inverseMassB = 0, inverseMassSum = 0;
+  };
+  ManifoldFrame manifoldFrame(const std::vector<RigidBody>& bodies, const ContactManifold& manifold,
+                              std::size_t m) const;
+  void buildRows(const ManifoldFrame& frame, const ContactManifold& manifold, int p, int rows,
+                 PointConstraint& c) const;
+  void buildConstraints(const std::vector<RigidBody>& bodies, const ContactManifold& manifold, std::size_t m,
+                        PointConstraint* out) const;
+  void buildNormalRows(const std::vector<RigidBody>& bodies, const ContactManifold& manifold, std::size_t m,
+                       PointConstraint* out) const;
+  void buildBatchConstraints(const std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
+                             IslandWork& work, const std::vector<std::uint32_t>& wideMembers,
+                             const std::vector<std::size_t>& groupStarts);
+  void prepareApproaches(const std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds,
+                         const Vec3& gravity, double dt);
   // useBias: the soft push-out of overlap (off in the relax pass after positions moved).
   void solveNormals(ContactManifold& manifold, std::size_t m, const SubstepContext& substeps, bool useBias,
                     bool reversed);
@@ -169,9 +199,10 @@ class SequentialImpulseSolver final : public ContactSolver {
   std::vector<MotionProperties> motionProperties_;  // per body in a manifold, from prepare
   std::vector<char> listed_;                        // per body: in a manifold this step (prepare)
   std::vector<ManifoldTangents> tangents_;      // per manifold
-  std::vector<PointConstraint> constraints_;      // maxPoints per manifold
+  std::vector<PointConstraint> constraints_;    // maxPoints per manifold, where constrained_
+  std::vector<char> constrained_;               // per manifold: its constraints are in constraints_
   std::vector<double> touching_;                  // per manifold: largest separation that holds weight, m
-  std::vector<bool> approaching_;                 // per manifold: every point still apart at the start
+  std::vector<char> approaching_;                 // per manifold: every point still apart at the start
   std::vector<Eigen::Matrix4d> approachMass_;     // per manifold, where approaching_: normal rows' J M^-1 J^T
   std::vector<Eigen::Matrix4d> approachInverse_;  // and its pseudo-inverse
   std::vector<double> lastSubstep_;               // per body: the substep it took last step (0: none yet)

@@ -12,6 +12,9 @@ struct SolverBody {
   BodyMotion motion;
   Mat3 rotation = Mat3::Identity();
   Mat3 inverseInertia = Mat3::Zero();
+  // At least the largest eigenvalue of inverseInertia (its largest absolute
+  // row sum): bounds what a unit angular impulse can do to the spin.
+  double inverseInertiaBound = 0;
   Vec3 linearMask = Vec3::Ones(), angularMask = Vec3::Ones();  // 0 on locked axes
   double inverseMass = 0;
   double size = 0;  // middle extent of the collider's box, m

@@ -172,6 +172,7 @@ void packPoint(WidePoint& wide, int lane, const PointConstraint& c, const Manifo
   setLane(wide.tangentMass[0], lane, c.tangentMass[0]);
   setLane(wide.tangentMass[1], lane, c.tangentMass[1]);
   setLane(wide.friction, lane, c.friction);
+  setLane(wide.gap, lane, 0.0);
   setLane(wide.largestImpulse, lane, c.largestImpulse);
   setLane(wide.normalImpulse, lane, point.normalImpulse);
   setLane(wide.tangentImpulse[0], lane, point.tangentImpulse[0]);
@@ -181,34 +182,40 @@ void packPoint(WidePoint& wide, int lane, const PointConstraint& c, const Manifo
 
 }  // namespace
 
-WideManifolds packWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
-                                const std::vector<PointConstraint>& constraints,
-                                const std::vector<ManifoldTangents>& tangents, const std::vector<SolverBody>& bodies) {
-  WideManifolds group{};
-  group.manifold.fill(WideManifolds::empty);
-  group.bodyA.fill(WideManifolds::empty);
-  group.bodyB.fill(WideManifolds::empty);
-  for (int lane = 0; lane < count && lane < lanes; ++lane) {
-    const std::uint32_t m = members[lane];
-    const ContactManifold& manifold = manifolds[m];
-    const PointConstraint& first = constraints[m * slots];
+// Every lane of every used slot is written (empty ones with zeros), so the
+// group needs no clearing first: a box pile fills every slot anyway.
+void packWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
+                       const PointConstraint* const* constraints, const std::vector<ManifoldTangents>& tangents,
+                       const std::vector<SolverBody>& bodies, WideManifolds& group) {
+  // What an empty point slot holds: zero mass and impulse, so it changes nothing.
+  const PointConstraint empty{};
+  const ManifoldPoint nothing{};
+  count = std::min(count, lanes);
+  group.pointSlots = 0;
+  for (int lane = 0; lane < count; ++lane)
+    group.pointSlots = std::max(group.pointSlots, manifolds[members[lane]].pointCount);
+  const Vec3 zero = Vec3::Zero();
+  for (int lane = 0; lane < lanes; ++lane) {
+    const bool used = lane < count;
+    const std::uint32_t m = used ? members[lane] : WideManifolds::empty;
+    const ContactManifold* manifold = used ? &manifolds[m] : nullptr;
     group.manifold[lane] = m;
-    group.bodyA[lane] = manifold.a;
-    group.bodyB[lane] = manifold.b;
-    group.writableA[lane] = bodies[manifold.a].movable;
-    group.writableB[lane] = bodies[manifold.b].movable;
-    setLanes(group.direction[0], lane, manifold.normal);
-    setLanes(group.direction[1], lane, tangents[m][0]);
-    setLanes(group.direction[2], lane, tangents[m][1]);
-    setLane(group.inverseMassA, lane, first.inverseMassA);
-    setLane(group.inverseMassB, lane, first.inverseMassB);
-    setLanes(group.linearMaskA, lane, bodies[manifold.a].linearMask);
-    setLanes(group.linearMaskB, lane, bodies[manifold.b].linearMask);
-    for (int p = 0; p < manifold.pointCount; ++p)
-      packPoint(group.points[p], lane, constraints[m * slots + p], manifold.points[p]);
-    group.pointSlots = std::max(group.pointSlots, manifold.pointCount);
+    group.bodyA[lane] = used ? manifold->a : WideManifolds::empty;
+    group.bodyB[lane] = used ? manifold->b : WideManifolds::empty;
+    group.writableA[lane] = used && bodies[manifold->a].movable;
+    group.writableB[lane] = used && bodies[manifold->b].movable;
+    setLanes(group.direction[0], lane, used ? manifold->normal : zero);
+    setLanes(group.direction[1], lane, used ? tangents[m][0] : zero);
+    setLanes(group.direction[2], lane, used ? tangents[m][1] : zero);
+    setLane(group.inverseMassA, lane, used ? constraints[lane][0].inverseMassA : 0.0);
+    setLane(group.inverseMassB, lane, used ? constraints[lane][0].inverseMassB : 0.0);
+    setLanes(group.linearMaskA, lane, used ? bodies[manifold->a].linearMask : zero);
+    setLanes(group.linearMaskB, lane, used ? bodies[manifold->b].linearMask : zero);
+    const int points = used ? manifold->pointCount : 0;
+    for (int p = 0; p < group.pointSlots; ++p)
+      packPoint(group.points[p], lane, p < points ? constraints[lane][p] : empty,
+                p < points ? manifold->points[p] : nothing);
   }
-  return group;
 }
 
 void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies) {
@@ -235,7 +242,7 @@ void solveWide(WideManifolds& group, std::vector<SolverBody>& bodies, const Wide
 }
 
 void storeWideImpulses(const WideManifolds& group, std::vector<ContactManifold>& manifolds,
-                       std::vector<PointConstraint>& constraints) {
+                       std::vector<PointConstraint>& constraints, const std::vector<char>& kept) {
   for (int lane = 0; lane < lanes; ++lane) {
     const std::uint32_t m = group.manifold[lane];
     if (m == WideManifolds::empty) continue;
@@ -247,7 +254,7 @@ void storeWideImpulses(const WideManifolds& group, std::vector<ContactManifold>&
       point.tangentImpulse[0] = getLane(wide.tangentImpulse[0], lane);
       point.tangentImpulse[1] = getLane(wide.tangentImpulse[1], lane);
       point.stepNormalImpulse = getLane(wide.stepNormalImpulse, lane);
-      constraints[m * slots + p].largestImpulse = getLane(wide.largestImpulse, lane);
+      if (kept[m]) constraints[m * slots + p].largestImpulse = getLane(wide.largestImpulse, lane);
     }
   }
 }

@@ -45,11 +45,11 @@ struct WideManifolds {
 };
 
 // Up to simd::width manifolds (indices into `manifolds`, sharing no movable
-// body) into one group, from their prepared constraints (maxPoints per
-// manifold), their tangents and their current impulses.
-WideManifolds packWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
-                                const std::vector<PointConstraint>& constraints,
-                                const std::vector<ManifoldTangents>& tangents, const std::vector<SolverBody>& bodies);
+// body) into `group`, from their constraints (lane i's points at
+// constraints[i][0, pointCount)), their tangents and their current impulses.
+void packWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
+                       const PointConstraint* const* constraints, const std::vector<ManifoldTangents>& tangents,
+                       const std::vector<SolverBody>& bodies, WideManifolds& group);
 
 // Applies the impulses the group starts the substep with.
 void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies);
@@ -63,8 +63,9 @@ struct WideSweep {
 // One sweep: every point's normal row, then its friction.
 void solveWide(WideManifolds& group, std::vector<SolverBody>& bodies, const WideSweep& sweep);
 
-// Impulses (and each point's largest one) back to the manifolds and constraints.
+// Impulses back to the manifolds, and each point's largest one to the
+// constraints of the manifolds that keep theirs (`kept`, per manifold).
 void storeWideImpulses(const WideManifolds& group, std::vector<ContactManifold>& manifolds,
-                       std::vector<PointConstraint>& constraints);
+                       std::vector<PointConstraint>& constraints, const std::vector<char>& kept);
 
 }  // namespace physdbg
