@@ -6,6 +6,8 @@
 // products.
 #include <array>
 
+#include "engine/contacts/contact_manifold.h"
+#include "engine/contacts/material_combine.h"
 #include "engine/math.h"
 
 namespace physdbg {
@@ -31,5 +33,32 @@ struct PointConstraint {
   double gap;                         // separation at the current poses (measureGaps)
   double inverseMassA, inverseMassB;  // the bodies' inverse masses, as scaled for this contact
 };
+
+// What every point of one manifold shares when its constraints are built,
+// all from the start of the step: poses, velocities, the inverse masses and
+// inertia as scaled for the contact, the lock masks and the pair's material.
+struct ManifoldFrame {
+  Vec3 positionA, positionB;
+  Vec3 directions[3];  // the normal, then the two tangents
+  Mat3 inverseInertiaA, inverseInertiaB;
+  Vec3 angularMaskA, angularMaskB;  // 0 on locked axes
+  Vec3 linearVelocityA, angularVelocityA, linearVelocityB, angularVelocityB;
+  double inverseMassA, inverseMassB, inverseMassSum;
+  CombinedMaterial material;
+};
+
+struct ConstraintSettings {
+  double linearSlop;            // a point further apart pushes at its own surface
+  double stickingSpeed;         // below it static friction, above it dynamic
+  double restitutionThreshold;  // approaches slower than this do not bounce
+};
+
+// Point p's rows [0, rows) (rows = 0: the arms alone), its masses and the
+// bodies' inverse masses into c. The other fields are left alone.
+void buildPointRows(const ManifoldFrame& frame, const ContactManifold& manifold, int p, int rows,
+                    const ConstraintSettings& settings, PointConstraint& c);
+// Every field of every point's constraint into out[0, pointCount).
+void buildPointConstraints(const ManifoldFrame& frame, const ContactManifold& manifold,
+                           const ConstraintSettings& settings, PointConstraint* out);
 
 }  // namespace physdbg

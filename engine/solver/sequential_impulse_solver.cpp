@@ -594,28 +594,24 @@ double SequentialImpulseSolver::manifoldDemand(const std::vector<RigidBody>& bod
   const double force = (loads[m] > 0.0 ? loads[m] * gravity : carriedForce(manifold)) / touching;
   if (!(force > 0.0)) return 0.0;
   const double allowed = allowedOverlap(settings_, bodySize(manifold));
-  const ManifoldFrame frame = manifoldFrame(bodies, manifold, m);
+  PointConstraint rows[ContactManifold::maxPoints];
+  buildNormalRows(bodies, manifold, m, bound ? 0 : 1, rows);
   double demand = 0.0;
   if (bound) {
     const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
     const auto [scaleA, scaleB] = massScales_[m];
     double armA = 0.0, armB = 0.0;
     for (int p = 0; p < manifold.pointCount; ++p) {
-      PointConstraint c;
-      buildRows(frame, manifold, p, 0, c);
-      armA = std::max(armA, c.armA.squaredNorm());
-      armB = std::max(armB, c.armB.squaredNorm());
+      armA = std::max(armA, rows[p].armA.squaredNorm());
+      armB = std::max(armB, rows[p].armB.squaredNorm());
     }
-    const double give =
-        frame.inverseMassSum + armA * scaleA * a.inverseInertiaBound + armB * scaleB * b.inverseInertiaBound;
+    const double give = rows[0].inverseMassA + rows[0].inverseMassB + armA * scaleA * a.inverseInertiaBound +
+                        armB * scaleB * b.inverseInertiaBound;
     // The margin covers the rounding of the exact sum.
     return force * give * (1.0 + 1e-6) / allowed;
   }
-  for (int p = 0; p < manifold.pointCount; ++p) {
-    PointConstraint c;
-    buildRows(frame, manifold, p, 1, c);
-    if (c.normalMass > 0.0) demand = std::max(demand, force / c.normalMass / allowed);
-  }
+  for (int p = 0; p < manifold.pointCount; ++p)
+    if (rows[p].normalMass > 0.0) demand = std::max(demand, force / rows[p].normalMass / allowed);
   return demand;
 }
 
@@ -865,19 +861,18 @@ void SequentialImpulseSolver::prepareApproaches(const std::vector<RigidBody>& bo
     const Vec3& normal = manifold.normal;
     // Closing speed at the fastest point, plus what gravity may add this
     // step. The speed along the normal needs the arms alone.
-    const ManifoldFrame frame = manifoldFrame(bodies, manifold, m);
     PointConstraint rows[ContactManifold::maxPoints];
+    buildNormalRows(bodies, manifold, m, 0, rows);
     double closing = std::abs(gravity.dot(normal)) * dt;
     double fastest = 0.0;
     for (int p = 0; p < manifold.pointCount; ++p) {
-      buildRows(frame, manifold, p, 0, rows[p]);
       rows[p].crossA[0] = rows[p].armA.cross(normal);
       rows[p].crossB[0] = rows[p].armB.cross(normal);
       fastest = std::max(fastest, -rowVelocity(manifold, rows[p], normal, 0));
     }
     closing += fastest;
     if (!(closing > slowApproach)) return;
-    for (int p = 0; p < manifold.pointCount; ++p) buildRows(frame, manifold, p, 1, rows[p]);
+    buildNormalRows(bodies, manifold, m, 1, rows);
     const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
     const PointConstraint& first = rows[0];
     const double linear = first.inverseMassA * normal.cwiseProduct(a.linearMask).dot(normal) +

@@ -90,7 +90,7 @@ class SequentialImpulseSolver final : public ContactSolver {
     SubstepContext substeps;
     std::vector<ColourWork> colours;
     std::vector<std::uint32_t> overflow;
-    std::vector<WideManifolds> groups;
+    WideGroups groups;
     std::vector<std::uint32_t> singles;  // every manifold in no group: the colours' scalar ones and the overflow
     bool touchesKinematic = false;
     double largestPenetration = 0.0;
@@ -146,23 +146,13 @@ class SequentialImpulseSolver final : public ContactSolver {
   void warmStart(std::vector<ContactManifold>& manifolds, IslandWork& work);
   void warmStartManifold(ContactManifold& manifold, std::size_t m);
   // Constraint rows (sequential_impulse_prepare.cpp): what a manifold's
-  // points share, one point's rows [0, rows), a whole manifold's
-  // constraints into out[0, pointCount), its normal rows alone, and a
-  // batch's (wideMembers[groupStarts[g], groupStarts[g + 1]) are group g's
-  // manifolds).
-  struct ManifoldFrame {
-    Vec3 positionA, positionB;
-    Vec3 directions[3];                     // the normal, then the two tangents
-    Mat3 inverseInertiaA, inverseInertiaB;  // as scaled for the contact
-    double inverseMassA = 0, inverseMassB = 0, inverseMassSum = 0;
-  };
-  ManifoldFrame manifoldFrame(const std::vector<RigidBody>& bodies, const ContactManifold& manifold,
-                              std::size_t m) const;
-  void buildRows(const ManifoldFrame& frame, const ContactManifold& manifold, int p, int rows,
-                 PointConstraint& c) const;
-  void buildConstraints(const std::vector<RigidBody>& bodies, const ContactManifold& manifold, std::size_t m,
-                        PointConstraint* out) const;
-  void buildNormalRows(const std::vector<RigidBody>& bodies, const ContactManifold& manifold, std::size_t m,
+  // points share, each point's rows [0, rows) into out[0, pointCount), and
+  // a batch's constraints (wideMembers[groupStarts[g], groupStarts[g + 1])
+  // are group g's manifolds).
+  ManifoldFrame manifoldFrame(const std::vector<RigidBody>& bodies, const ContactManifold& manifold, std::size_t m,
+                              bool withMotion) const;
+  ConstraintSettings constraintSettings() const;
+  void buildNormalRows(const std::vector<RigidBody>& bodies, const ContactManifold& manifold, std::size_t m, int rows,
                        PointConstraint* out) const;
   void buildBatchConstraints(const std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
                              IslandWork& work, const std::vector<std::uint32_t>& wideMembers,
@@ -179,7 +169,6 @@ class SequentialImpulseSolver final : public ContactSolver {
   double largestPenetration(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
   // Each point's current gap (separation) at the solver bodies' poses.
   void manifoldGaps(const ContactManifold& manifold, double (&gaps)[ContactManifold::maxPoints]) const;
-  Vec3 relativeVelocity(const ContactManifold& manifold, const PointConstraint& constraint) const;
   double rowVelocity(const ContactManifold& manifold, const PointConstraint& constraint, const Vec3& direction,
                      int row) const;
   void applyRow(const ContactManifold& manifold, const PointConstraint& constraint, const Vec3& direction, int row,

@@ -55,6 +55,21 @@ inline bool any(Lanes mask) {
   return set != 0;
 #endif
 }
+// One lane of a register, read or written through memory (packing and
+// unpacking, not the inner loops).
+inline void setLane(Lanes& target, int lane, double value) {
+  std::memcpy(reinterpret_cast<char*>(&target) + lane * sizeof(double), &value, sizeof value);
+}
+inline double getLane(const Lanes& source, int lane) {
+  double value;
+  std::memcpy(&value, reinterpret_cast<const char*>(&source) + lane * sizeof(double), sizeof value);
+  return value;
+}
+// A mask lane: all bits set or none.
+inline void setMaskLane(Lanes& target, int lane, bool set) {
+  const std::uint64_t bits = set ? ~std::uint64_t{0} : 0;
+  std::memcpy(reinterpret_cast<char*>(&target) + lane * sizeof(double), &bits, sizeof bits);
+}
 // Lane by lane: `yes` where `mask` is set, else `no`.
 inline Lanes select(Lanes mask, Lanes yes, Lanes no) { return {Eigen::internal::pselect(mask.value, yes.value, no.value)}; }
 

@@ -11,19 +11,7 @@ using simd::Lanes;
 constexpr int lanes = simd::width;
 constexpr int slots = ContactManifold::maxPoints;
 
-void setLane(Lanes& target, int lane, double value) {
-  std::memcpy(reinterpret_cast<char*>(&target) + lane * sizeof(double), &value, sizeof value);
-}
-
-double getLane(const Lanes& source, int lane) {
-  double value;
-  std::memcpy(&value, reinterpret_cast<const char*>(&source) + lane * sizeof(double), sizeof value);
-  return value;
-}
-
-void setLanes(Lanes (&target)[3], int lane, const Vec3& value) {
-  for (int axis = 0; axis < 3; ++axis) setLane(target[axis], lane, value[axis]);
-}
+using simd::getLane;
 
 // The velocities of one side's bodies, lane by lane (zero in empty lanes):
 // v[0..2] linear, v[3..5] angular. A body's six velocities are one run of
@@ -161,62 +149,7 @@ void solveFriction(LaneVelocities& a, LaneVelocities& b, const WideManifolds& gr
   point.tangentImpulse[1] = tangent[1];
 }
 
-void packPoint(WidePoint& wide, int lane, const PointConstraint& c, const ManifoldPoint& point) {
-  for (int row = 0; row < 3; ++row) {
-    setLanes(wide.crossA[row], lane, c.crossA[row]);
-    setLanes(wide.crossB[row], lane, c.crossB[row]);
-    setLanes(wide.turnA[row], lane, c.turnA[row]);
-    setLanes(wide.turnB[row], lane, c.turnB[row]);
-  }
-  setLane(wide.normalMass, lane, c.normalMass);
-  setLane(wide.tangentMass[0], lane, c.tangentMass[0]);
-  setLane(wide.tangentMass[1], lane, c.tangentMass[1]);
-  setLane(wide.friction, lane, c.friction);
-  setLane(wide.gap, lane, 0.0);
-  setLane(wide.largestImpulse, lane, c.largestImpulse);
-  setLane(wide.normalImpulse, lane, point.normalImpulse);
-  setLane(wide.tangentImpulse[0], lane, point.tangentImpulse[0]);
-  setLane(wide.tangentImpulse[1], lane, point.tangentImpulse[1]);
-  setLane(wide.stepNormalImpulse, lane, point.stepNormalImpulse);
-}
-
 }  // namespace
-
-// Every lane of every used slot is written (empty ones with zeros), so the
-// group needs no clearing first: a box pile fills every slot anyway.
-void packWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
-                       const PointConstraint* const* constraints, const std::vector<ManifoldTangents>& tangents,
-                       const std::vector<SolverBody>& bodies, WideManifolds& group) {
-  // What an empty point slot holds: zero mass and impulse, so it changes nothing.
-  const PointConstraint empty{};
-  const ManifoldPoint nothing{};
-  count = std::min(count, lanes);
-  group.pointSlots = 0;
-  for (int lane = 0; lane < count; ++lane)
-    group.pointSlots = std::max(group.pointSlots, manifolds[members[lane]].pointCount);
-  const Vec3 zero = Vec3::Zero();
-  for (int lane = 0; lane < lanes; ++lane) {
-    const bool used = lane < count;
-    const std::uint32_t m = used ? members[lane] : WideManifolds::empty;
-    const ContactManifold* manifold = used ? &manifolds[m] : nullptr;
-    group.manifold[lane] = m;
-    group.bodyA[lane] = used ? manifold->a : WideManifolds::empty;
-    group.bodyB[lane] = used ? manifold->b : WideManifolds::empty;
-    group.writableA[lane] = used && bodies[manifold->a].movable;
-    group.writableB[lane] = used && bodies[manifold->b].movable;
-    setLanes(group.direction[0], lane, used ? manifold->normal : zero);
-    setLanes(group.direction[1], lane, used ? tangents[m][0] : zero);
-    setLanes(group.direction[2], lane, used ? tangents[m][1] : zero);
-    setLane(group.inverseMassA, lane, used ? constraints[lane][0].inverseMassA : 0.0);
-    setLane(group.inverseMassB, lane, used ? constraints[lane][0].inverseMassB : 0.0);
-    setLanes(group.linearMaskA, lane, used ? bodies[manifold->a].linearMask : zero);
-    setLanes(group.linearMaskB, lane, used ? bodies[manifold->b].linearMask : zero);
-    const int points = used ? manifold->pointCount : 0;
-    for (int p = 0; p < group.pointSlots; ++p)
-      packPoint(group.points[p], lane, p < points ? constraints[lane][p] : empty,
-                p < points ? manifold->points[p] : nothing);
-  }
-}
 
 void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies) {
   LaneVelocities a = gather(group.bodyA, bodies), b = gather(group.bodyB, bodies);

@@ -13,6 +13,10 @@
 // all points together (the 4x4 approach solve) stay scalar.
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "engine/contacts/contact_manifold.h"
@@ -31,25 +35,54 @@ struct WidePoint {
   simd::Lanes normalImpulse, tangentImpulse[2], largestImpulse, stepNormalImpulse;
 };
 
+// No member is initialised by default: buildWideManifolds writes every
+// field a sweep reads, and a batch's groups (WideGroups) are made without
+// zeroing first (6 KB a group, 7% of a box pile's instructions).
 struct WideManifolds {
   static constexpr std::uint32_t empty = ~0u;
   std::array<std::uint32_t, simd::width> manifold, bodyA, bodyB;  // `empty` in unused lanes
-  std::array<bool, simd::width> writableA{}, writableB{};         // a movable body in the lane
+  std::array<bool, simd::width> writableA, writableB;             // a movable body in the lane
   simd::Lanes direction[3][3];  // [row][axis]: the normal, then the two tangents
   simd::Lanes inverseMassA, inverseMassB;  // as scaled for the contact
   simd::Lanes linearMaskA[3], linearMaskB[3];
   std::array<WidePoint, ContactManifold::maxPoints> points;
   // The most points any lane has: slots past it are empty in every lane, so
   // a group of sphere contacts (one point each) solves one slot, not four.
-  int pointSlots = 0;
+  int pointSlots;
 };
 
+// Makes elements default-initialised, where std::allocator value-initialises
+// (zeroes) them: for a vector whose elements are written before they are read.
+template <class T>
+struct DefaultInitialisingAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = DefaultInitialisingAllocator<U>;
+  };
+  DefaultInitialisingAllocator() = default;
+  template <class U>
+  DefaultInitialisingAllocator(const DefaultInitialisingAllocator<U>&) noexcept {}
+  template <class U>
+  void construct(U* place) noexcept(std::is_nothrow_default_constructible_v<U>) {
+    ::new (static_cast<void*>(place)) U;
+  }
+  template <class U, class... Arguments>
+  void construct(U* place, Arguments&&... arguments) {
+    ::new (static_cast<void*>(place)) U(std::forward<Arguments>(arguments)...);
+  }
+};
+using WideGroups = std::vector<WideManifolds, DefaultInitialisingAllocator<WideManifolds>>;
+
 // Up to simd::width manifolds (indices into `manifolds`, sharing no movable
-// body) into `group`, from their constraints (lane i's points at
-// constraints[i][0, pointCount)), their tangents and their current impulses.
-void packWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
-                       const PointConstraint* const* constraints, const std::vector<ManifoldTangents>& tangents,
-                       const std::vector<SolverBody>& bodies, WideManifolds& group);
+// body) into `group`: their constraints, built straight into the lanes from
+// frames[lane] (wide_constraint_build.cpp) by the operations
+// buildPointConstraints does, in its order, so each lane holds the numbers it
+// would; their tangents; their current impulses. Returns a bit per lane
+// whose manifold has a point that may bounce (restitution not 0).
+unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
+                            const ManifoldFrame* frames, const std::vector<ManifoldTangents>& tangents,
+                            const std::vector<SolverBody>& bodies, const ConstraintSettings& settings,
+                            WideManifolds& group);
 
 // Applies the impulses the group starts the substep with.
 void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies);

@@ -1,0 +1,158 @@
+// buildWideManifolds (wide_contact_rows.h) builds a group's constraints in
+// SIMD lanes; each lane must hold, bit for bit, what buildPointConstraints
+// (point_constraint.h) gives for its manifold, and slots a manifold lacks
+// must hold zeros. Random frames: turned inertia, locked axes, moving
+// bodies, touching and speculative points, bouncing and resting.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "engine/solver/point_constraint.h"
+#include "engine/solver/wide_contact_rows.h"
+
+namespace physdbg {
+namespace {
+
+using simd::Lanes;
+
+struct Case {
+  std::vector<ContactManifold> manifolds;
+  std::vector<ManifoldTangents> tangents;
+  std::vector<SolverBody> bodies;
+  std::vector<ManifoldFrame> frames;
+};
+
+Vec3 randomVector(std::mt19937& random, double scale) {
+  std::uniform_real_distribution<double> value(-scale, scale);
+  return Vec3(value(random), value(random), value(random));
+}
+
+Mat3 randomInverseInertia(std::mt19937& random) {
+  const Mat3 rotation = Quat(Eigen::AngleAxisd(2.0, randomVector(random, 1.0).normalized())).toRotationMatrix();
+  std::uniform_real_distribution<double> moment(0.2, 5.0);
+  return rotation * Vec3(moment(random), moment(random), moment(random)).asDiagonal() * rotation.transpose();
+}
+
+ManifoldFrame randomFrame(std::mt19937& random, const ContactManifold& manifold, const ManifoldTangents& tangents) {
+  std::bernoulli_distribution locked(0.2), still(0.3);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  ManifoldFrame frame;
+  frame.positionA = randomVector(random, 3.0);
+  frame.positionB = randomVector(random, 3.0);
+  frame.directions[0] = manifold.normal;
+  frame.directions[1] = tangents[0];
+  frame.directions[2] = tangents[1];
+  frame.inverseInertiaA = randomInverseInertia(random);
+  frame.inverseInertiaB = still(random) ? Mat3::Zero() : randomInverseInertia(random);
+  for (int axis = 0; axis < 3; ++axis) {
+    frame.angularMaskA[axis] = locked(random) ? 0.0 : 1.0;
+    frame.angularMaskB[axis] = locked(random) ? 0.0 : 1.0;
+  }
+  frame.linearVelocityA = randomVector(random, 2.0);
+  frame.angularVelocityA = randomVector(random, 2.0);
+  frame.linearVelocityB = still(random) ? Vec3::Zero() : randomVector(random, 2.0);
+  frame.angularVelocityB = randomVector(random, 1.0);
+  frame.inverseMassA = unit(random);
+  frame.inverseMassB = still(random) ? 0.0 : unit(random);
+  frame.inverseMassSum = frame.inverseMassA + frame.inverseMassB;
+  frame.material = {unit(random), unit(random), 0.5 * unit(random)};
+  return frame;
+}
+
+Case randomCase(std::mt19937& random, int count) {
+  Case result;
+  std::uniform_int_distribution<int> points(1, ContactManifold::maxPoints);
+  std::uniform_real_distribution<double> separation(-0.02, 0.03);
+  for (int lane = 0; lane < count; ++lane) {
+    ContactManifold manifold;
+    manifold.a = 2 * lane;
+    manifold.b = 2 * lane + 1;
+    manifold.normal = randomVector(random, 1.0).normalized();
+    manifold.pointCount = points(random);
+    for (int p = 0; p < manifold.pointCount; ++p) {
+      ManifoldPoint& point = manifold.points[p];
+      point.pointA = randomVector(random, 3.0);
+      point.separation = separation(random);
+      point.pointB = point.pointA + point.separation * manifold.normal;
+      point.normalImpulse = 0.1 * p;
+      point.tangentImpulse[0] = -0.05 * p;
+      point.tangentImpulse[1] = 0.02 * lane;
+    }
+    ManifoldTangents tangents;
+    tangents[0] = manifold.normal.unitOrthogonal();
+    tangents[1] = manifold.normal.cross(tangents[0]);
+    result.frames.push_back(randomFrame(random, manifold, tangents));
+    result.manifolds.push_back(manifold);
+    result.tangents.push_back(tangents);
+  }
+  result.bodies.resize(2 * count);
+  for (SolverBody& body : result.bodies) body.movable = true;
+  return result;
+}
+
+// Bit for bit, so that -0 and 0 differ too.
+void expectSame(double expected, const Lanes& lanes, int lane, const char* field, int p) {
+  const double actual = simd::getLane(lanes, lane);
+  EXPECT_EQ(0, std::memcmp(&expected, &actual, sizeof expected))
+      << field << ", lane " << lane << ", point " << p << ": " << expected << " vs " << actual;
+}
+
+TEST(WideConstraintBuild, LanesHoldTheScalarConstraintsBitForBit) {
+  std::mt19937 random(17);
+  const ConstraintSettings settings{0.005, 0.02, 0.2};
+  for (int trial = 0; trial < 200; ++trial) {
+    const int count = 1 + trial % simd::width;
+    const Case input = randomCase(random, count);
+    std::vector<std::uint32_t> members(count);
+    for (int lane = 0; lane < count; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
+    WideManifolds group;
+    const unsigned bouncing = buildWideManifolds(members.data(), count, input.manifolds, input.frames.data(),
+                                                 input.tangents, input.bodies, settings, group);
+    int mostPoints = 0;
+    for (int lane = 0; lane < count; ++lane) {
+      const ContactManifold& manifold = input.manifolds[lane];
+      mostPoints = std::max(mostPoints, manifold.pointCount);
+      PointConstraint expected[ContactManifold::maxPoints];
+      buildPointConstraints(input.frames[lane], manifold, settings, expected);
+      bool bounces = false;
+      for (int p = 0; p < manifold.pointCount; ++p) {
+        const PointConstraint& c = expected[p];
+        const WidePoint& wide = group.points[p];
+        bounces = bounces || c.restitution != 0.0;
+        expectSame(c.normalMass, wide.normalMass, lane, "normalMass", p);
+        expectSame(c.tangentMass[0], wide.tangentMass[0], lane, "tangentMass[0]", p);
+        expectSame(c.tangentMass[1], wide.tangentMass[1], lane, "tangentMass[1]", p);
+        expectSame(c.friction, wide.friction, lane, "friction", p);
+        expectSame(manifold.points[p].normalImpulse, wide.normalImpulse, lane, "normalImpulse", p);
+        expectSame(manifold.points[p].tangentImpulse[1], wide.tangentImpulse[1], lane, "tangentImpulse[1]", p);
+        for (int row = 0; row < 3; ++row)
+          for (int axis = 0; axis < 3; ++axis) {
+            expectSame(c.crossA[row][axis], wide.crossA[row][axis], lane, "crossA", p);
+            expectSame(c.crossB[row][axis], wide.crossB[row][axis], lane, "crossB", p);
+            expectSame(c.turnA[row][axis], wide.turnA[row][axis], lane, "turnA", p);
+            expectSame(c.turnB[row][axis], wide.turnB[row][axis], lane, "turnB", p);
+          }
+      }
+      EXPECT_EQ(bounces, (bouncing >> lane & 1u) != 0) << "trial " << trial << ", lane " << lane;
+      expectSame(input.frames[lane].inverseMassA, group.inverseMassA, lane, "inverseMassA", 0);
+      // A slot the manifold lacks changes nothing: no mass, no impulse.
+      for (int p = manifold.pointCount; p < mostPoints; ++p) {
+        expectSame(0.0, group.points[p].normalMass, lane, "empty normalMass", p);
+        expectSame(0.0, group.points[p].turnA[1][2], lane, "empty turnA", p);
+        expectSame(0.0, group.points[p].normalImpulse, lane, "empty normalImpulse", p);
+      }
+    }
+    EXPECT_EQ(group.pointSlots, mostPoints);
+    for (int lane = count; lane < simd::width; ++lane) {
+      EXPECT_EQ(group.manifold[lane], WideManifolds::empty);
+      EXPECT_FALSE(group.writableA[lane]);
+      for (int p = 0; p < group.pointSlots; ++p) expectSame(0.0, group.points[p].tangentMass[0], lane, "empty lane", p);
+    }
+    if (HasFailure()) FAIL() << "trial " << trial;
+  }
+}
+
+}  // namespace
+}  // namespace physdbg
