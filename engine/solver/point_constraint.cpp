@@ -23,16 +23,21 @@ Vec3 maskedProduct(const Mat3& inertia, const Vec3& v, const Vec3& mask) {
 
 }  // namespace
 
+// Touching or overlapping, both bodies push at the midpoint. A speculative
+// point may still be metres from the other body; there each pushes at its
+// own surface, or friction gets a long lever.
+void pointArms(const ContactManifold& manifold, int p, const Vec3& positionA, const Vec3& positionB, double linearSlop,
+               Vec3& armA, Vec3& armB) {
+  const ManifoldPoint& point = manifold.points[p];
+  const bool apart = point.separation > linearSlop;
+  const Vec3 middle = 0.5 * (point.pointA + point.pointB);
+  armA = (apart ? point.pointA : middle) - positionA;
+  armB = (apart ? point.pointB : middle) - positionB;
+}
+
 void buildPointRows(const ManifoldFrame& frame, const ContactManifold& manifold, int p, int rows,
                     const ConstraintSettings& settings, PointConstraint& c) {
-  const ManifoldPoint& point = manifold.points[p];
-  // Touching or overlapping, both bodies push at the midpoint. A
-  // speculative point may still be metres from the other body; there
-  // each pushes at its own surface, or friction gets a long lever.
-  const bool apart = point.separation > settings.linearSlop;
-  const Vec3 middle = 0.5 * (point.pointA + point.pointB);
-  c.armA = (apart ? point.pointA : middle) - frame.positionA;
-  c.armB = (apart ? point.pointB : middle) - frame.positionB;
+  pointArms(manifold, p, frame.positionA, frame.positionB, settings.linearSlop, c.armA, c.armB);
   for (int row = 0; row < rows; ++row) {
     c.crossA[row] = c.armA.cross(frame.directions[row]);
     c.crossB[row] = c.armB.cross(frame.directions[row]);

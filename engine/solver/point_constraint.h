@@ -53,6 +53,9 @@ struct ConstraintSettings {
   double restitutionThreshold;  // approaches slower than this do not bounce
 };
 
+// Where point p of the manifold pushes, from each body's centre of mass.
+void pointArms(const ContactManifold& manifold, int p, const Vec3& positionA, const Vec3& positionB, double linearSlop,
+               Vec3& armA, Vec3& armB);
 // Point p's rows [0, rows) (rows = 0: the arms alone), its masses and the
 // bodies' inverse masses into c. The other fields are left alone.
 void buildPointRows(const ManifoldFrame& frame, const ContactManifold& manifold, int p, int rows,

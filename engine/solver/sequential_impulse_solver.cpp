@@ -594,22 +594,25 @@ double SequentialImpulseSolver::manifoldDemand(const std::vector<RigidBody>& bod
   const double force = (loads[m] > 0.0 ? loads[m] * gravity : carriedForce(manifold)) / touching;
   if (!(force > 0.0)) return 0.0;
   const double allowed = allowedOverlap(settings_, bodySize(manifold));
-  PointConstraint rows[ContactManifold::maxPoints];
-  buildNormalRows(bodies, manifold, m, bound ? 0 : 1, rows);
-  double demand = 0.0;
   if (bound) {
     const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
     const auto [scaleA, scaleB] = massScales_[m];
     double armA = 0.0, armB = 0.0;
     for (int p = 0; p < manifold.pointCount; ++p) {
-      armA = std::max(armA, rows[p].armA.squaredNorm());
-      armB = std::max(armB, rows[p].armB.squaredNorm());
+      Vec3 pointArmA, pointArmB;
+      pointArms(manifold, p, bodies[manifold.a].position(), bodies[manifold.b].position(), settings_.linearSlop,
+                pointArmA, pointArmB);
+      armA = std::max(armA, pointArmA.squaredNorm());
+      armB = std::max(armB, pointArmB.squaredNorm());
     }
-    const double give = rows[0].inverseMassA + rows[0].inverseMassB + armA * scaleA * a.inverseInertiaBound +
+    const double give = scaleA * a.inverseMass + scaleB * b.inverseMass + armA * scaleA * a.inverseInertiaBound +
                         armB * scaleB * b.inverseInertiaBound;
     // The margin covers the rounding of the exact sum.
     return force * give * (1.0 + 1e-6) / allowed;
   }
+  PointConstraint rows[ContactManifold::maxPoints];
+  buildNormalRows(bodies, manifold, m, 1, rows);
+  double demand = 0.0;
   for (int p = 0; p < manifold.pointCount; ++p)
     if (rows[p].normalMass > 0.0) demand = std::max(demand, force / rows[p].normalMass / allowed);
   return demand;

@@ -166,6 +166,7 @@ unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::
                             WideManifolds& group) {
   count = std::min(count, lanes);
   group.pointSlots = 0;
+  group.linearLocks = false;
   const Vec3 zero = Vec3::Zero();
   for (int lane = 0; lane < lanes; ++lane) {
     const bool used = lane < count;
@@ -183,7 +184,10 @@ unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::
     simd::setLane(group.inverseMassB, lane, used ? frames[lane].inverseMassB : 0.0);
     setLanes(group.linearMaskA, lane, used ? bodies[manifold->a].linearMask : zero);
     setLanes(group.linearMaskB, lane, used ? bodies[manifold->b].linearMask : zero);
-    if (used) group.pointSlots = std::max(group.pointSlots, manifold->pointCount);
+    if (!used) continue;
+    group.pointSlots = std::max(group.pointSlots, manifold->pointCount);
+    group.linearLocks = group.linearLocks || bodies[manifold->a].linearMask != Vec3::Ones() ||
+                        bodies[manifold->b].linearMask != Vec3::Ones();
   }
   const FrameLanes frame = frameLanes(frames, count);
   unsigned bouncing = 0;

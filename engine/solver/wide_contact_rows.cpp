@@ -93,22 +93,28 @@ using PacketBlock = Eigen::internal::PacketBlock<simd::Packet, lanes>;
          dot(a.angular(), point.crossA[row]);
 }
 
+// `locks`: some lane has a locked linear axis. Without, every mask is 1 and
+// multiplying by it changes no bit, so it is left out.
+template <bool locks>
 [[gnu::always_inline]] inline void applyRow(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group,
                                             const WidePoint& point, int row, Lanes impulse) {
   const Lanes linearA = group.inverseMassA * impulse, linearB = group.inverseMassB * impulse;
   for (int axis = 0; axis < 3; ++axis) {
-    a.v[axis] -= linearA * (group.direction[row][axis] * group.linearMaskA[axis]);
+    const Lanes direction = group.direction[row][axis];
+    a.v[axis] -= linearA * (locks ? direction * group.linearMaskA[axis] : direction);
     a.v[3 + axis] -= impulse * point.turnA[row][axis];
-    b.v[axis] += linearB * (group.direction[row][axis] * group.linearMaskB[axis]);
+    b.v[axis] += linearB * (locks ? direction * group.linearMaskB[axis] : direction);
     b.v[3 + axis] += impulse * point.turnB[row][axis];
   }
 }
 
+template <bool locks>
 void applyNormal(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, WidePoint& point, Lanes impulse) {
-  applyRow(a, b, group, point, 0, impulse);
+  applyRow<locks>(a, b, group, point, 0, impulse);
   point.stepNormalImpulse += impulse;
 }
 
+template <bool locks>
 void solveNormal(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, WidePoint& point,
                  const WideSweep& sweep) {
   const Softness& softness = sweep.substeps->softness;
@@ -125,11 +131,12 @@ void solveNormal(LaneVelocities& a, LaneVelocities& b, const WideManifolds& grou
   const Lanes normalVelocity = rowVelocity(a, b, group, point, 0);
   const Lanes impulse = -point.normalMass * massScale * (normalVelocity + bias) - impulseScale * point.normalImpulse;
   const Lanes total = simd::max(point.normalImpulse + impulse, zero);
-  applyNormal(a, b, group, point, total - point.normalImpulse);
+  applyNormal<locks>(a, b, group, point, total - point.normalImpulse);
   point.normalImpulse = total;
   point.largestImpulse = simd::max(point.largestImpulse, total);
 }
 
+template <bool locks>
 void solveFriction(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, WidePoint& point) {
   Lanes tangent[2];
   for (int t = 0; t < 2; ++t)
@@ -143,35 +150,55 @@ void solveFriction(LaneVelocities& a, LaneVelocities& b, const WideManifolds& gr
     const Lanes scale = limit / simd::sqrt(simd::select(clamp, squared, Lanes::all(1.0)));
     for (int t = 0; t < 2; ++t) tangent[t] = simd::select(clamp, tangent[t] * scale, tangent[t]);
   }
-  applyRow(a, b, group, point, 1, tangent[0] - point.tangentImpulse[0]);
-  applyRow(a, b, group, point, 2, tangent[1] - point.tangentImpulse[1]);
+  applyRow<locks>(a, b, group, point, 1, tangent[0] - point.tangentImpulse[0]);
+  applyRow<locks>(a, b, group, point, 2, tangent[1] - point.tangentImpulse[1]);
   point.tangentImpulse[0] = tangent[0];
   point.tangentImpulse[1] = tangent[1];
 }
 
 }  // namespace
 
-void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies) {
+namespace {
+
+template <bool locks>
+void warmStartGroup(WideManifolds& group, std::vector<SolverBody>& bodies) {
   LaneVelocities a = gather(group.bodyA, bodies), b = gather(group.bodyB, bodies);
   for (int p = 0; p < group.pointSlots; ++p) {
     WidePoint& point = group.points[p];
-    applyNormal(a, b, group, point, point.normalImpulse);
-    applyRow(a, b, group, point, 1, point.tangentImpulse[0]);
-    applyRow(a, b, group, point, 2, point.tangentImpulse[1]);
+    applyNormal<locks>(a, b, group, point, point.normalImpulse);
+    applyRow<locks>(a, b, group, point, 1, point.tangentImpulse[0]);
+    applyRow<locks>(a, b, group, point, 2, point.tangentImpulse[1]);
   }
   scatter(a, group.bodyA, group.writableA, bodies);
   scatter(b, group.bodyB, group.writableB, bodies);
 }
 
-void solveWide(WideManifolds& group, std::vector<SolverBody>& bodies, const WideSweep& sweep) {
+template <bool locks>
+void solveGroup(WideManifolds& group, std::vector<SolverBody>& bodies, const WideSweep& sweep) {
   LaneVelocities a = gather(group.bodyA, bodies), b = gather(group.bodyB, bodies);
   const int used = group.pointSlots;
   for (int visit = 0; visit < used; ++visit)
-    solveNormal(a, b, group, group.points[sweep.reversed ? used - 1 - visit : visit], sweep);
+    solveNormal<locks>(a, b, group, group.points[sweep.reversed ? used - 1 - visit : visit], sweep);
   for (int visit = 0; visit < used; ++visit)
-    solveFriction(a, b, group, group.points[sweep.reversed ? used - 1 - visit : visit]);
+    solveFriction<locks>(a, b, group, group.points[sweep.reversed ? used - 1 - visit : visit]);
   scatter(a, group.bodyA, group.writableA, bodies);
   scatter(b, group.bodyB, group.writableB, bodies);
+}
+
+}  // namespace
+
+void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies) {
+  if (group.linearLocks)
+    warmStartGroup<true>(group, bodies);
+  else
+    warmStartGroup<false>(group, bodies);
+}
+
+void solveWide(WideManifolds& group, std::vector<SolverBody>& bodies, const WideSweep& sweep) {
+  if (group.linearLocks)
+    solveGroup<true>(group, bodies, sweep);
+  else
+    solveGroup<false>(group, bodies, sweep);
 }
 
 void storeWideImpulses(const WideManifolds& group, std::vector<ContactManifold>& manifolds,

@@ -45,6 +45,7 @@ struct WideManifolds {
   simd::Lanes direction[3][3];  // [row][axis]: the normal, then the two tangents
   simd::Lanes inverseMassA, inverseMassB;  // as scaled for the contact
   simd::Lanes linearMaskA[3], linearMaskB[3];
+  bool linearLocks;  // some lane's mask is not 1 on every axis
   std::array<WidePoint, ContactManifold::maxPoints> points;
   // The most points any lane has: slots past it are empty in every lane, so
   // a group of sphere contacts (one point each) solves one slot, not four.
