@@ -1,8 +1,8 @@
 // SequentialImpulseSolver::addCandidates: the narrow phase hands over a whole
 // pass, so the manifolds (reference-face clipping, ~5% of a box step) are
-// built in parallel. Each candidate has its own slot and each piece its own
-// scratch; the kept ones are appended in pair order afterwards, so
-// manifolds_ is what addCandidate on each in turn gives, for any thread count.
+// built in parallel. Each kept candidate has its own slot in manifolds_, in
+// pair order, and each piece its own scratch, so manifolds_ is what
+// addCandidate on each in turn gives, for any thread count.
 // A manifold the GPU collision stage built arrives prebuilt and is only kept.
 #include "engine/parallel/task_system.h"
 #include "engine/solver/sequential_impulse_solver.h"
@@ -11,25 +11,35 @@ namespace physdbg {
 namespace {
 
 constexpr std::size_t candidateGrain = 64;  // a manifold is ~0.5 us to build
+constexpr std::size_t notKept = ~std::size_t{0};
 
 }  // namespace
 
 int SequentialImpulseSolver::addCandidates(const std::vector<Contact>& candidates, const std::vector<double>& reaches,
                                            const std::vector<RigidBody>& bodies, const StepContext& step,
                                            const std::vector<const ContactManifold*>& prebuilt) {
-  candidateManifolds_.resize(candidates.size());
-  candidateKept_.resize(candidates.size());
+  // Which candidates are kept, and where each goes: decided first, so the
+  // manifolds are built straight into manifolds_ in parallel (building them
+  // aside and appending was a serial copy of every manifold, 600 bytes each).
+  const std::size_t first = manifolds_.size();
+  candidateSlot_.resize(candidates.size());
+  std::size_t kept = first;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const ContactResult& result = candidates[i].result;
+    const bool keep = !(result.status == ContactStatus::Separated && result.distance > reaches[i]);
+    candidateSlot_[i] = keep ? kept++ : notKept;
+  }
+  manifolds_.resize(kept);
   const auto build = [&](std::size_t begin, std::size_t end) {
     ManifoldScratch scratch;
     for (std::size_t i = begin; i < end; ++i) {
-      const Contact& contact = candidates[i];
-      candidateKept_[i] = !(contact.result.status == ContactStatus::Separated && contact.result.distance > reaches[i]);
-      if (!candidateKept_[i]) continue;
+      if (candidateSlot_[i] == notKept) continue;
+      ContactManifold& manifold = manifolds_[candidateSlot_[i]];
       if (!prebuilt.empty() && prebuilt[i] != nullptr) {
-        candidateManifolds_[i] = *prebuilt[i];
+        manifold = *prebuilt[i];
         continue;
       }
-      ContactManifold& manifold = candidateManifolds_[i] = ContactManifold{};
+      const Contact& contact = candidates[i];
       manifold.a = contact.a;
       manifold.b = contact.b;
       const RigidBody &a = bodies[contact.a], &b = bodies[contact.b];
@@ -40,11 +50,7 @@ int SequentialImpulseSolver::addCandidates(const std::vector<Contact>& candidate
   if (step.tasks) step.tasks->parallelFor(candidates.size(), candidateGrain, build);
   else build(0, candidates.size());
   int points = 0;
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (!candidateKept_[i]) continue;
-    manifolds_.push_back(candidateManifolds_[i]);
-    points += candidateManifolds_[i].pointCount;
-  }
+  for (std::size_t m = first; m < manifolds_.size(); ++m) points += manifolds_[m].pointCount;
   return points;
 }
 

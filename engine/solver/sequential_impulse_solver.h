@@ -181,8 +181,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   SolverSettings settings_;
   std::vector<ContactManifold> manifolds_, previousManifolds_;
   ManifoldScratch manifoldScratch_;
-  std::vector<ContactManifold> candidateManifolds_;  // per candidate of addCandidates, before keeping
-  std::vector<char> candidateKept_;                  // per candidate: within reach, so kept
+  std::vector<std::size_t> candidateSlot_;  // per candidate of addCandidates: its manifold, or none
   std::vector<Contact> eventContacts_;  // this step's contacts plus speculative impacts
   std::vector<SolverBody> solverBodies_;
   std::vector<MotionProperties> motionProperties_;  // per body in a manifold, from prepare
