@@ -23,6 +23,28 @@ Vec3 maskedProduct(const Mat3& inertia, const Vec3& v, const Vec3& mask) {
 
 }  // namespace
 
+namespace {
+
+// rotation^T * v, each component summed left to right.
+Vec3 transposedProduct(const Mat3& rotation, const Vec3& v) {
+  Vec3 result;
+  for (int i = 0; i < 3; ++i) result[i] = rotation(0, i) * v[0] + rotation(1, i) * v[1] + rotation(2, i) * v[2];
+  return result;
+}
+
+}  // namespace
+
+void pointGaps(const ContactManifold& manifold, const Vec3& positionA, const Mat3& rotationA, const Vec3& positionB,
+               const Mat3& rotationB, double* gaps) {
+  const double centres = (positionB - positionA).dot(manifold.normal);
+  const Vec3 normalInA = transposedProduct(rotationA, manifold.normal);
+  const Vec3 normalInB = transposedProduct(rotationB, manifold.normal);
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    const ManifoldPoint& point = manifold.points[p];
+    gaps[p] = centres + (normalInB.dot(point.localB) - normalInA.dot(point.localA));
+  }
+}
+
 // Touching or overlapping, both bodies push at the midpoint. A speculative
 // point may still be metres from the other body; there each pushes at its
 // own surface, or friction gets a long lever.

@@ -53,6 +53,14 @@ struct ConstraintSettings {
   double restitutionThreshold;  // approaches slower than this do not bounce
 };
 
+// Each point's gap (separation) with A's centre and rotation at positionA,
+// rotationA, and B's: n . (pB + RB lB - pA - RA lA) = n . (pB - pA) +
+// (RB^T n) . lB - (RA^T n) . lA, so the normal is turned into each body's
+// frame once instead of every anchor into the world. Products spelled out,
+// so measureWideGaps repeats them exactly.
+void pointGaps(const ContactManifold& manifold, const Vec3& positionA, const Mat3& rotationA, const Vec3& positionB,
+               const Mat3& rotationB, double* gaps);
+
 // Where point p of the manifold pushes, from each body's centre of mass.
 void pointArms(const ContactManifold& manifold, int p, const Vec3& positionA, const Vec3& positionB, double linearSlop,
                Vec3& armA, Vec3& armB);

@@ -48,20 +48,10 @@ Eigen::Matrix4d pseudoInverse(const Eigen::Matrix4d& matrix) {
 
 }  // namespace
 
-// Every point's current gap, from its anchors on both bodies, in the normal's
-// frame: n . (pB + RB lB - pA - RA lA) = n . (pB - pA) + (RB^T n) . lB -
-// (RA^T n) . lA, so a manifold turns the normal into each body's frame once
-// instead of each local point into the world (two matrix products per
-// manifold, not two per point).
 void SequentialImpulseSolver::manifoldGaps(const ContactManifold& manifold,
                                            double (&gaps)[ContactManifold::maxPoints]) const {
   const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-  const double centres = (b.motion.position - a.motion.position).dot(manifold.normal);
-  const Vec3 normalInA = a.rotation.transpose() * manifold.normal, normalInB = b.rotation.transpose() * manifold.normal;
-  for (int p = 0; p < manifold.pointCount; ++p) {
-    const ManifoldPoint& point = manifold.points[p];
-    gaps[p] = centres + (normalInB.dot(point.localB) - normalInA.dot(point.localA));
-  }
+  pointGaps(manifold, a.motion.position, a.rotation, b.motion.position, b.rotation, gaps);
 }
 
 inline double SequentialImpulseSolver::rowVelocity(const ContactManifold& manifold, const PointConstraint& c,
@@ -741,18 +731,7 @@ void SequentialImpulseSolver::integratePositions(const std::vector<std::uint32_t
 // 0, and their zero masses leave them out of the solve), a single
 // manifold's into its points' constraints.
 void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& manifolds, IslandWork& work) {
-  forEach(work.groups.size(), 64, [&](std::size_t g) {
-    WideManifolds& group = work.groups[g];
-    alignas(64) double lanes[ContactManifold::maxPoints][simd::width] = {};
-    for (int lane = 0; lane < simd::width; ++lane) {
-      const std::uint32_t m = group.manifold[lane];
-      if (m == WideManifolds::empty) continue;
-      double gaps[ContactManifold::maxPoints];
-      manifoldGaps(manifolds[m], gaps);
-      for (int p = 0; p < manifolds[m].pointCount; ++p) lanes[p][lane] = gaps[p];
-    }
-    for (int p = 0; p < group.pointSlots; ++p) group.points[p].gap = simd::Lanes::load(lanes[p]);
-  });
+  forEach(work.groups.size(), 64, [&](std::size_t g) { measureWideGaps(work.groups[g], solverBodies_); });
   forEach(work.singles.size(), 256, [&](std::size_t i) {
     const std::uint32_t m = work.singles[i];
     double gaps[ContactManifold::maxPoints];

@@ -70,6 +70,45 @@ inline void setMaskLane(Lanes& target, int lane, bool set) {
   const std::uint64_t bits = set ? ~std::uint64_t{0} : 0;
   std::memcpy(reinterpret_cast<char*>(&target) + lane * sizeof(double), &bits, sizeof bits);
 }
+// Eigen's packets are vector types whose alignment attribute a template
+// argument drops; PacketBlock is Eigen's own way to hold them, so that is fine.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wignored-attributes"
+using PacketBlock = Eigen::internal::PacketBlock<Packet, width>;
+#pragma GCC diagnostic pop
+
+// width registers, each holding one lane's run, become width registers each
+// holding one position of every lane's run (and back: it is its own inverse).
+[[gnu::always_inline]] inline void transpose(Lanes* block) {
+  if constexpr (width > 1) {
+    PacketBlock packets;
+    for (int i = 0; i < width; ++i) packets.packet[i] = block[i].value;
+    Eigen::internal::ptranspose(packets);
+    for (int i = 0; i < width; ++i) block[i].value = packets.packet[i];
+  }
+}
+
+// Where the b-th packet of a run of `count` doubles starts: 0, W, 2W, ...,
+// and the last one ends at the run's end (overlapping the one before).
+constexpr int runBlocks(int count) { return (count + width - 1) / width; }
+constexpr int runBlockStart(int count, int block) {
+  return block * width + width <= count ? block * width : count - width;
+}
+
+// Lane l's run of `count` doubles at runs[l] into out[0, count), one
+// register per position: whole packets read and transposed, no lane-by-lane
+// inserts. Needs count >= width.
+template <int count>
+[[gnu::always_inline]] inline void gatherRuns(const double* const* runs, Lanes* out) {
+  static_assert(count >= width, "a run shorter than a packet");
+  for (int b = 0; b < runBlocks(count); ++b) {
+    Lanes block[width];
+    for (int lane = 0; lane < width; ++lane) block[lane] = Lanes::load(runs[lane] + runBlockStart(count, b));
+    transpose(block);
+    for (int i = 0; i < width; ++i) out[runBlockStart(count, b) + i] = block[i];
+  }
+}
+
 // Lane by lane: `yes` where `mask` is set, else `no`.
 inline Lanes select(Lanes mask, Lanes yes, Lanes no) { return {Eigen::internal::pselect(mask.value, yes.value, no.value)}; }
 

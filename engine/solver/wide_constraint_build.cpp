@@ -7,6 +7,7 @@
 // -mfma, and Eigen's 3-vector products sum left to right), so a lane holds
 // the scalar numbers bit for bit. Slots a manifold does not use hold zeros.
 #include <algorithm>
+#include <cstddef>
 
 #include "engine/solver/wide_contact_rows.h"
 
@@ -86,7 +87,7 @@ FrameLanes frameLanes(const ManifoldFrame* frames, int count) {
 // One point slot of every lane, as the manifolds hold it (zero where a lane
 // has no such point; `present` says where it has).
 struct SlotInput {
-  Lanes pointA[3], pointB[3], separation, present;
+  Lanes pointA[3], pointB[3], localA[3], localB[3], separation, present;
   Lanes normalImpulse, tangentImpulse[2], stepNormalImpulse;
 };
 
@@ -98,6 +99,8 @@ SlotInput slotInput(const std::uint32_t* members, int count, const std::vector<C
     const ManifoldPoint& point = present ? manifolds[members[lane]].points[p] : nothing;
     setLanes(in.pointA, lane, point.pointA);
     setLanes(in.pointB, lane, point.pointB);
+    setLanes(in.localA, lane, point.localA);
+    setLanes(in.localB, lane, point.localB);
     simd::setLane(in.separation, lane, point.separation);
     simd::setMaskLane(in.present, lane, present);
     simd::setLane(in.normalImpulse, lane, point.normalImpulse);
@@ -192,11 +195,52 @@ unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::
   const FrameLanes frame = frameLanes(frames, count);
   unsigned bouncing = 0;
   for (int p = 0; p < group.pointSlots; ++p) {
-    const Lanes restitution = buildSlot(frame, slotInput(members, count, manifolds, p), settings, group.points[p]);
+    const SlotInput in = slotInput(members, count, manifolds, p);
+    for (int axis = 0; axis < 3; ++axis) {
+      group.localA[p][axis] = in.localA[axis];
+      group.localB[p][axis] = in.localB[axis];
+    }
+    group.present[p] = in.present;
+    const Lanes restitution = buildSlot(frame, in, settings, group.points[p]);
     for (int lane = 0; lane < count; ++lane)
       if (simd::getLane(restitution, lane) != 0.0) bouncing |= 1u << lane;
   }
   return bouncing;
+}
+
+// pointGaps (point_constraint.cpp) lane by lane, operation for operation.
+void measureWideGaps(WideManifolds& group, const std::vector<SolverBody>& bodies) {
+  // Whole packets from each lane's body, transposed (simd::gatherRuns). A
+  // position is read with the doubles after it (BodyMotion's orientation),
+  // so the run is at least a packet long; only the first three are used.
+  constexpr int positionRun = std::max(3, lanes);
+  static_assert(offsetof(BodyMotion, position) + positionRun * sizeof(double) <= sizeof(BodyMotion));
+  alignas(64) static constexpr double nothing[16] = {};  // an empty lane's
+  const double *runsA[lanes], *runsB[lanes], *turnsA[lanes], *turnsB[lanes];
+  for (int lane = 0; lane < lanes; ++lane) {
+    const bool used = group.manifold[lane] != WideManifolds::empty;
+    runsA[lane] = used ? bodies[group.bodyA[lane]].motion.position.data() : nothing;
+    runsB[lane] = used ? bodies[group.bodyB[lane]].motion.position.data() : nothing;
+    turnsA[lane] = used ? bodies[group.bodyA[lane]].rotation.data() : nothing;
+    turnsB[lane] = used ? bodies[group.bodyB[lane]].rotation.data() : nothing;
+  }
+  Lanes positionA[positionRun], positionB[positionRun], columnsA[9], columnsB[9];
+  simd::gatherRuns<positionRun>(runsA, positionA);
+  simd::gatherRuns<positionRun>(runsB, positionB);
+  simd::gatherRuns<9>(turnsA, columnsA);  // column-major: R(row, column) at 3 column + row
+  simd::gatherRuns<9>(turnsB, columnsB);
+  const Lanes* normal = group.direction[0];
+  Lanes offset[3], normalInA[3], normalInB[3];
+  for (int i = 0; i < 3; ++i) {
+    offset[i] = positionB[i] - positionA[i];
+    normalInA[i] = columnsA[3 * i] * normal[0] + columnsA[3 * i + 1] * normal[1] + columnsA[3 * i + 2] * normal[2];
+    normalInB[i] = columnsB[3 * i] * normal[0] + columnsB[3 * i + 1] * normal[1] + columnsB[3 * i + 2] * normal[2];
+  }
+  const Lanes centres = dot(offset, normal);
+  for (int p = 0; p < group.pointSlots; ++p) {
+    const Lanes gap = centres + (dot(normalInB, group.localB[p]) - dot(normalInA, group.localA[p]));
+    group.points[p].gap = simd::select(group.present[p], gap, Lanes::zero());
+  }
 }
 
 }  // namespace physdbg

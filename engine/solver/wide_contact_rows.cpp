@@ -25,30 +25,11 @@ struct LaneVelocities {
   const Lanes* angular() const { return v + 3; }
 };
 
-constexpr int blocks = (6 + lanes - 1) / lanes;
-constexpr int blockStart(int block) { return block * lanes + lanes <= 6 ? block * lanes : 6 - lanes; }
-
 alignas(64) constexpr double noVelocity[6] = {};  // an empty lane's
 
 const double* velocities(const BodyMotion& motion) {
   assert(motion.angularVelocity.data() == motion.linearVelocity.data() + 3);
   return motion.linearVelocity.data();
-}
-
-// Eigen's packets are vector types whose alignment attribute a template
-// argument drops; PacketBlock is Eigen's own way to hold them, so that is fine.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wignored-attributes"
-using PacketBlock = Eigen::internal::PacketBlock<simd::Packet, lanes>;
-#pragma GCC diagnostic pop
-
-[[gnu::always_inline]] inline void transpose(Lanes* block) {
-  if constexpr (lanes > 1) {
-    PacketBlock packets;
-    for (int i = 0; i < lanes; ++i) packets.packet[i] = block[i].value;
-    Eigen::internal::ptranspose(packets);
-    for (int i = 0; i < lanes; ++i) block[i].value = packets.packet[i];
-  }
 }
 
 [[gnu::always_inline]] inline LaneVelocities gather(const std::array<std::uint32_t, lanes>& ids,
@@ -57,12 +38,7 @@ using PacketBlock = Eigen::internal::PacketBlock<simd::Packet, lanes>;
   for (int lane = 0; lane < lanes; ++lane)
     rows[lane] = ids[lane] == WideManifolds::empty ? noVelocity : velocities(bodies[ids[lane]].motion);
   LaneVelocities result;
-  for (int b = 0; b < blocks; ++b) {
-    Lanes block[lanes];
-    for (int lane = 0; lane < lanes; ++lane) block[lane] = Lanes::load(rows[lane] + blockStart(b));
-    transpose(block);
-    for (int i = 0; i < lanes; ++i) result.v[blockStart(b) + i] = block[i];
-  }
+  simd::gatherRuns<6>(rows, result.v);
   return result;
 }
 
@@ -71,12 +47,13 @@ using PacketBlock = Eigen::internal::PacketBlock<simd::Packet, lanes>;
 [[gnu::always_inline]] inline void scatter(const LaneVelocities& velocities,
                                            const std::array<std::uint32_t, lanes>& ids,
                                            const std::array<bool, lanes>& writable, std::vector<SolverBody>& bodies) {
-  for (int b = 0; b < blocks; ++b) {
+  for (int b = 0; b < simd::runBlocks(6); ++b) {
+    const int start = simd::runBlockStart(6, b);
     Lanes block[lanes];
-    for (int i = 0; i < lanes; ++i) block[i] = velocities.v[blockStart(b) + i];
-    transpose(block);
+    for (int i = 0; i < lanes; ++i) block[i] = velocities.v[start + i];
+    simd::transpose(block);
     for (int lane = 0; lane < lanes; ++lane)
-      if (writable[lane]) block[lane].store(bodies[ids[lane]].motion.linearVelocity.data() + blockStart(b));
+      if (writable[lane]) block[lane].store(bodies[ids[lane]].motion.linearVelocity.data() + start);
   }
 }
 

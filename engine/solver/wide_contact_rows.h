@@ -47,6 +47,10 @@ struct WideManifolds {
   simd::Lanes linearMaskA[3], linearMaskB[3];
   bool linearLocks;  // some lane's mask is not 1 on every axis
   std::array<WidePoint, ContactManifold::maxPoints> points;
+  // Each point's anchors in its bodies' frames, for the gaps: apart from
+  // the points, so the sweeps do not stream them.
+  simd::Lanes localA[ContactManifold::maxPoints][3], localB[ContactManifold::maxPoints][3];
+  simd::Lanes present[ContactManifold::maxPoints];  // mask: the lane's manifold has this point
   // The most points any lane has: slots past it are empty in every lane, so
   // a group of sphere contacts (one point each) solves one slot, not four.
   int pointSlots;
@@ -84,6 +88,10 @@ unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::
                             const ManifoldFrame* frames, const std::vector<ManifoldTangents>& tangents,
                             const std::vector<SolverBody>& bodies, const ConstraintSettings& settings,
                             WideManifolds& group);
+
+// Every point's gap at the bodies' current poses (pointGaps, lane by lane)
+// into points[p].gap; 0 where a lane has no such point.
+void measureWideGaps(WideManifolds& group, const std::vector<SolverBody>& bodies);
 
 // Applies the impulses the group starts the substep with.
 void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies);

@@ -154,5 +154,40 @@ TEST(WideConstraintBuild, LanesHoldTheScalarConstraintsBitForBit) {
   }
 }
 
+// measureWideGaps gives each lane what pointGaps gives its manifold, bit
+// for bit, and 0 where a lane has no such point.
+TEST(WideConstraintBuild, LaneGapsMatchTheScalarGapsBitForBit) {
+  std::mt19937 random(23);
+  const ConstraintSettings settings{0.005, 0.02, 0.2};
+  for (int trial = 0; trial < 200; ++trial) {
+    const int count = 1 + trial % simd::width;
+    Case input = randomCase(random, count);
+    for (ContactManifold& manifold : input.manifolds)
+      for (int p = 0; p < manifold.pointCount; ++p) {
+        manifold.points[p].localA = randomVector(random, 0.7);
+        manifold.points[p].localB = randomVector(random, 0.7);
+      }
+    for (SolverBody& body : input.bodies) {
+      body.motion.position = randomVector(random, 5.0);
+      body.rotation = Quat(Eigen::AngleAxisd(3.0, randomVector(random, 1.0).normalized())).toRotationMatrix();
+    }
+    std::vector<std::uint32_t> members(count);
+    for (int lane = 0; lane < count; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
+    WideManifolds group;
+    buildWideManifolds(members.data(), count, input.manifolds, input.frames.data(), input.tangents, input.bodies,
+                       settings, group);
+    measureWideGaps(group, input.bodies);
+    for (int lane = 0; lane < count; ++lane) {
+      const ContactManifold& manifold = input.manifolds[lane];
+      const SolverBody &a = input.bodies[manifold.a], &b = input.bodies[manifold.b];
+      double gaps[ContactManifold::maxPoints];
+      pointGaps(manifold, a.motion.position, a.rotation, b.motion.position, b.rotation, gaps);
+      for (int p = 0; p < group.pointSlots; ++p)
+        expectSame(p < manifold.pointCount ? gaps[p] : 0.0, group.points[p].gap, lane, "gap", p);
+    }
+    if (HasFailure()) FAIL() << "trial " << trial;
+  }
+}
+
 }  // namespace
 }  // namespace physdbg
