@@ -409,32 +409,6 @@ void SequentialImpulseSolver::planIsland(const std::vector<RigidBody>& bodies, s
   buildBatchConstraints(bodies, manifolds, work, wideMembers, groupStarts);
 }
 
-void SequentialImpulseSolver::forEach(std::size_t count, std::size_t grain,
-                                      const std::function<void(std::size_t)>& body) const {
-  if (!tasks_ || tasks_->threadCount() <= 1 || count <= grain) {
-    for (std::size_t i = 0; i < count; ++i) body(i);
-    return;
-  }
-  tasks_->parallelFor(count, grain, [&body](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) body(i);
-  });
-}
-
-void SequentialImpulseSolver::runColours(IslandWork& work, const std::function<void(WideManifolds&)>& wide,
-                                         const std::function<void(std::uint32_t)>& single) const {
-  // A piece of a colour should outweigh handing it to another thread.
-  constexpr std::size_t grain = 32;
-  for (const ColourWork& colour : work.colours) {
-    forEach(colour.groupCount + colour.scalar.size(), grain, [&](std::size_t i) {
-      if (i < colour.groupCount)
-        wide(work.groups[colour.firstGroup + i]);
-      else
-        single(colour.scalar[i - colour.groupCount]);
-    });
-  }
-  for (std::uint32_t m : work.overflow) single(m);
-}
-
 void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
                                           IslandWork& work, const std::vector<std::uint32_t>& kinematic) {
   const ContactIsland& island = work.island;

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "engine/contacts/manifold_builder.h"
+#include "engine/parallel/task_system.h"
 #include "engine/solver/contact_islands.h"
 #include "engine/solver/contact_solver.h"
 #include "engine/solver/point_constraint.h"
@@ -128,10 +129,33 @@ class SequentialImpulseSolver final : public ContactSolver {
                    const std::vector<std::uint32_t>& kinematic);
   // body(i) for i in [0, count), spread over the world's threads when there
   // is enough work; each i must write only what it owns.
-  void forEach(std::size_t count, std::size_t grain, const std::function<void(std::size_t)>& body) const;
+  // Templates, not std::function: a substep calls them per body and per
+  // group, and the indirect call per element was measurable.
+  template <class Body>
+  void forEach(std::size_t count, std::size_t grain, const Body& body) const {
+    if (!tasks_ || tasks_->threadCount() <= 1 || count <= grain) {
+      for (std::size_t i = 0; i < count; ++i) body(i);
+      return;
+    }
+    tasks_->parallelFor(count, grain, [&body](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) body(i);
+    });
+  }
   // Each colour's wide groups and single manifolds (in parallel), then the overflow.
-  void runColours(IslandWork& work, const std::function<void(WideManifolds&)>& wide,
-                  const std::function<void(std::uint32_t)>& single) const;
+  template <class Wide, class Single>
+  void runColours(IslandWork& work, const Wide& wide, const Single& single) const {
+    // A piece of a colour should outweigh handing it to another thread.
+    constexpr std::size_t grain = 32;
+    for (const ColourWork& colour : work.colours) {
+      forEach(colour.groupCount + colour.scalar.size(), grain, [&](std::size_t i) {
+        if (i < colour.groupCount)
+          wide(work.groups[colour.firstGroup + i]);
+        else
+          single(colour.scalar[i - colour.groupCount]);
+      });
+    }
+    for (std::uint32_t m : work.overflow) single(m);
+  }
   void prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                std::vector<ContactManifold>& manifolds);
   // Per manifold, the factors on a's and b's inverse mass and inertia: 1,
