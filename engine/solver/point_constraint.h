@@ -13,14 +13,13 @@
 namespace physdbg {
 
 // The friction directions every point of a manifold shares: kept once per
-// manifold, not per point (the constraints are written and read back each
-// step, a cache line per 64 bytes).
+// manifold, not per point.
 using ManifoldTangents = std::array<Vec3, 2>;
 
-// No member is initialised by default: the solver builds constraints on the
-// stack for every wide group (sequential_impulse_prepare.cpp), and zeroing
-// 472 bytes a point first was a tenth of that build. The builder writes every
-// field; a vector of them is zeroed by value-initialisation.
+// No member is initialised by default: the solver builds normal rows on the
+// stack for every loaded manifold (loadedHertz) and need not zero 472 bytes a
+// point first. The builders write every field they are asked for; a vector
+// of them is zeroed by value-initialisation.
 struct PointConstraint {
   Vec3 armA, armB;  // from the centres of mass at the start of the step
   Vec3 crossA[3], crossB[3];

@@ -28,7 +28,6 @@
 // Each batch builds its own constraint rows once it knows its groups,
 // straight into the lanes (sequential_impulse_prepare.cpp). Nothing depends
 // on how work is split: any thread count gives the same result bit for bit.
-#include <functional>
 #include <vector>
 
 #include "engine/contacts/manifold_builder.h"
