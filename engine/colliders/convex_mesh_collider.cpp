@@ -11,17 +11,14 @@ constexpr int kBruteForceVertexCount = 16;
 // Plateau vertices walked before giving up for a linear scan (a face seen
 // head-on with more corners than this, or a zero direction).
 constexpr int kPlateauCapacity = 64;
+// Bands (bandScale_ * |d|_1) outside these come from directions whose p . d
+// may under- or overflow, where no margin can be trusted.
+constexpr double kLeastTrustedBand = 1e-280;
+constexpr double kGreatestTrustedBand = 1e280;
 
 // p . d written out, so every caller rounds it alike; the climb and the
 // scan must agree to the last bit.
 double along(const Vec3& p, const Vec3& d) { return p.x() * d.x() + p.y() * d.y() + p.z() * d.z(); }
-
-// Six axis directions, then the eight cube diagonals.
-Vec3 seedDirection(int s) {
-  if (s < 6) return Vec3::Unit(s / 2) * (s % 2 == 0 ? 1.0 : -1.0);
-  const int d = s - 6;
-  return Vec3(d & 1 ? 1.0 : -1.0, d & 2 ? 1.0 : -1.0, d & 4 ? 1.0 : -1.0);
-}
 
 // Covariance of a tetrahedron with one vertex at the origin (unit density).
 Mat3 tetrahedronCovariance(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -75,10 +72,16 @@ ConvexMeshCollider::ConvexMeshCollider(std::vector<Vec3> points) : hull_(buildCo
   bounds_ = {v.front(), v.front()};
   for (const Vec3& p : v) bounds_ = {bounds_.min.cwiseMin(p), bounds_.max.cwiseMax(p)};
   bandScale_ = 32.0 * DBL_EPSILON * std::max(bounds_.min.cwiseAbs().maxCoeff(), bounds_.max.cwiseAbs().maxCoeff());
-  for (int s = 0; s < static_cast<int>(seedVertices_.size()); ++s) {
-    const Vec3 direction = seedDirection(s);
-    for (int i = 0; i < static_cast<int>(v.size()); ++i) {
-      if (along(v[i], direction) > along(v[seedVertices_[s]], direction)) seedVertices_[s] = i;
+  // Each cell climbs from the one before, a nearby direction (the climb is
+  // exact from any start), so the table costs a few climbing steps a cell
+  // rather than a scan of the hull.
+  if (static_cast<int>(v.size()) > kBruteForceVertexCount) {
+    startMap_ = SupportCubeMap(static_cast<int>(v.size()));
+    int previous = 0;
+    for (int cell = 0; cell < startMap_.cellCount(); ++cell) {
+      const Vec3 direction = startMap_.cellCentre(cell);
+      previous = climb(direction, previous, bandScale_ * direction.lpNorm<1>());
+      startMap_.assign(hull_, cell, previous, bandScale_);
     }
   }
   const MassProperties mass = massProperties(hull_, bounds_);
@@ -104,20 +107,21 @@ int ConvexMeshCollider::supportIndex(const Vec3& direction, int hint) const {
   const double length = std::abs(direction.x()) + std::abs(direction.y()) + std::abs(direction.z());
   // A direction with a NaN or an infinity has no climb to speak of.
   if (count <= kBruteForceVertexCount || !(length <= DBL_MAX)) return scan(direction);
-  // Start from the best of the hint, the extreme vertex of the direction's
-  // octant diagonal and that of its dominant axis: fourteen precomputed
-  // extremes put a climb within a few steps of most answers.
-  int axis = 0;
-  direction.cwiseAbs().maxCoeff(&axis);
-  const int octant = (direction.x() >= 0.0 ? 1 : 0) | (direction.y() >= 0.0 ? 2 : 0) | (direction.z() >= 0.0 ? 4 : 0);
-  int start = seedVertices_[6 + octant];
-  double best = along(v[start], direction);
-  for (const int candidate : {seedVertices_[2 * axis + (direction[axis] < 0.0 ? 1 : 0)], hint}) {
-    if (candidate < 0 || candidate >= count) continue;
-    const double value = along(v[candidate], direction);
-    if (value > best) best = value, start = candidate;
+  const double band = bandScale_ * length;
+  // Zero, tiny and huge directions climb from the hint or vertex 0: the
+  // settled cells' margins assume p . d neither under- nor overflows.
+  if (!(band >= kLeastTrustedBand && band <= kGreatestTrustedBand)) {
+    return climb(direction, hint >= 0 && hint < count ? hint : 0, band);
   }
-  return climb(direction, start, bandScale_ * length);
+  const SupportCubeMap::Entry entry = startMap_.lookup(direction);
+  if (entry.settled) return entry.vertex;
+  // Otherwise start from the better of the hint and the answer at the
+  // centre of the direction's cell, which is usually one step away.
+  int start = entry.vertex;
+  if (hint >= 0 && hint < count && hint != start && along(v[hint], direction) > along(v[start], direction)) {
+    start = hint;
+  }
+  return climb(direction, start, band);
 }
 
 // Steepest ascent to a vertex no neighbour beats. Rounding can leave a tied

@@ -1,9 +1,10 @@
 #pragma once
 // Convex mesh from a point cloud. The hull is built once; support queries
 // hill-climb over hull-vertex adjacency (a linear function on a convex
-// polytope has no local maximum that is not global), starting from the best
-// of the caller's warm-start hints and fourteen precomputed extreme vertices
-// (along the axes and the cube diagonals). Small hulls are scanned by brute
+// polytope has no local maximum that is not global), starting from the better
+// of the caller's warm-start hint and a precomputed answer for a nearby
+// direction (support_cube_map.h, which also answers outright for directions
+// well inside one vertex's normal cone). Small hulls are scanned by brute
 // force, which is faster than climbing.
 //
 // The answer is the linear scan's, bit for bit, whatever the hints: the
@@ -22,6 +23,7 @@
 
 #include "engine/colliders/collider.h"
 #include "engine/colliders/convex_hull.h"
+#include "engine/colliders/support_cube_map.h"
 
 namespace physdbg {
 
@@ -35,6 +37,7 @@ class ConvexMeshCollider final : public Collider {
   const std::vector<HullFace>& hullFaces() const { return hull_.faces; }
   const std::vector<std::array<int, 3>>& hullTriangles() const { return hull_.triangles; }
   const Vec3& centroid() const { return centroid_; }
+  const SupportCubeMap& startMap() const { return startMap_; }
 
   // Index of the support vertex: the lowest index of largest p . direction.
   // `hint` is a vertex to start climbing from, such as an earlier answer
@@ -54,7 +57,7 @@ class ConvexMeshCollider final : public Collider {
   int settlePlateau(const Vec3& direction, int top, double floor) const;
 
   ConvexHull hull_;
-  std::array<int, 14> seedVertices_{};
+  SupportCubeMap startMap_;  // climb starts by direction; empty for brute-force hulls
   double bandScale_ = 0.0;  // times |d|_1: the rounding band of p . d (see climb)
   Aabb bounds_;
   Vec3 centroid_ = Vec3::Zero();

@@ -119,6 +119,23 @@ std::vector<Vec3> probeDirections(const ConvexMeshCollider& mesh, std::mt19937& 
   }
   for (int i = 0; i < 2000; ++i) directions.emplace_back(gaussian(rng), gaussian(rng), gaussian(rng));
   directions.push_back(Vec3::Zero());
+  // The start map's cell borders, where rounding decides the cell, and
+  // beyond its trusted range of scales.
+  const int cells = mesh.startMap().cellsPerEdge();
+  for (int face = 0; cells > 0 && face < 6; ++face) {
+    const int axis = face / 2;
+    for (int i = 0; i <= cells; ++i) {
+      for (int j = 0; j <= cells; ++j) {
+        Vec3 d;
+        d[axis] = face % 2 == 0 ? 1.0 : -1.0;
+        d[axis == 0 ? 1 : 0] = -1.0 + 2.0 * i / cells;
+        d[axis == 2 ? 1 : 2] = -1.0 + 2.0 * j / cells;
+        directions.push_back(d);
+        directions.push_back(d + 1e-16 * Vec3(gaussian(rng), gaussian(rng), gaussian(rng)));
+      }
+    }
+  }
+  for (const double scale : {1e-300, 1e-200, 1e200, 1e300}) directions.push_back(scale * Vec3(0.3, -0.5, 0.8));
   return directions;
 }
 
@@ -155,6 +172,51 @@ TEST(ConvexMeshCollider, SupportIndexIsTheLinearScansWhateverTheHint) {
       ASSERT_EQ(mesh.localSupport(d), v[expected]) << name;
     }
     EXPECT_GT(checked, 8000) << name;
+  }
+}
+
+// A settled cell answers without climbing, so its vertex must be the scan's
+// for every direction in it, up to its borders; and on a round hull most
+// directions should find one (else the map only slows small hulls down).
+TEST(ConvexMeshCollider, SettledCellsHoldTheScansAnswerToTheirBorders) {
+  for (const int count : {32, 256, 3000}) {
+    const std::vector<Vec3> cloud = sphereCloud(count, 41);
+    const ConvexMeshCollider mesh(cloud);
+    const SupportCubeMap& map = mesh.startMap();
+    const auto& v = mesh.hullVertices();
+    std::mt19937 rng(43);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int settled = 0, probes = 0;
+    for (int cell = 0; cell < map.cellCount(); ++cell) {
+      const Vec3 centre = map.cellCentre(cell);
+      // Corners and random points of the cell, pushed just past its sides.
+      const double half = 1.0 / map.cellsPerEdge();
+      for (int k = 0; k < 12; ++k) {
+        const double s = k < 4 ? (k & 1 ? 1.0 : -1.0) : 2.0 * unit(rng) - 1.0;
+        const double t = k < 4 ? (k & 2 ? 1.0 : -1.0) : 2.0 * unit(rng) - 1.0;
+        Vec3 d = centre;
+        int axis = 0;
+        centre.cwiseAbs().maxCoeff(&axis);
+        d[axis == 0 ? 1 : 0] += s * half * (1.0 + 1e-14);
+        d[axis == 2 ? 1 : 2] += t * half * (1.0 + 1e-14);
+        const SupportCubeMap::Entry entry = map.lookup(d);
+        ++probes;
+        if (!entry.settled) continue;
+        ++settled;
+        ASSERT_EQ(entry.vertex, scannedSupport(v, d))
+            << count << " points, cell " << cell << ", direction " << d.transpose();
+      }
+    }
+    int random = 0;
+    std::normal_distribution<double> gaussian(0.0, 1.0);
+    for (int i = 0; i < 10000; ++i) random += map.lookup(Vec3(gaussian(rng), gaussian(rng), gaussian(rng))).settled;
+    EXPECT_GT(settled, 1000) << count << " points: too few settled probes to check";
+    // Large hulls have more vertices than the capped map has cells: there
+    // the map gives starts, not answers.
+    if (count <= 256) {
+      EXPECT_GT(random, 4000) << count << " points";
+      EXPECT_GT(settled, probes / 3) << count << " points";
+    }
   }
 }
 
