@@ -1,8 +1,9 @@
 #include "engine/narrowphase/epa.h"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 #include <utility>
 
@@ -11,11 +12,16 @@ namespace {
 
 constexpr int kVertexCapacity = kEpaFaceCapacity / 2 + 4;
 
-struct Edge {
-  int from;
-  int to;
-  bool operator==(const Edge&) const = default;
-};
+// An oriented edge packed in one word (from in the high half), so finding an
+// edge's reverse among the removed ones is a scan of plain integers.
+using Edge = std::uint64_t;
+
+Edge makeEdge(int from, int to) {
+  return static_cast<Edge>(static_cast<std::uint32_t>(from)) << 32 | static_cast<std::uint32_t>(to);
+}
+Edge reversed(Edge edge) { return edge << 32 | edge >> 32; }
+int edgeFrom(Edge edge) { return static_cast<int>(edge >> 32); }
+int edgeTo(Edge edge) { return static_cast<int>(edge & 0xffffffffu); }
 
 struct Face {
   std::array<int, 3> v;
@@ -123,35 +129,46 @@ void initialisePolytope(Polytope& polytope, const std::array<SimplexVertex, 4>& 
   }
 }
 
-// Removes every face that sees w and closes the horizon to it. Returns false
+// Removes every face that sees w and closes the horizon to it. Returns the
+// face closest to the origin afterwards (found in the same passes), or -1
 // when the budget leaves no room.
-bool expand(Polytope& polytope, const SimplexVertex& vertex, int faceBudget, double eps) {
+int expand(Polytope& polytope, const SimplexVertex& vertex, int faceBudget, double eps) {
   std::array<Edge, kEpaFaceCapacity> removed;  // left uninitialised: filled before use
   int removedCount = 0;
   int live = 0;  // faces that stay are compacted in the same pass
+  int closest = -1;  // the first face of least distance, as a scan would find
+  double closestDistance = 0.0;
+  const auto consider = [&](int f) {
+    if (closest < 0 || polytope.faces[f].distance < closestDistance)
+      closest = f, closestDistance = polytope.faces[f].distance;
+  };
   for (int f = 0; f < polytope.faceCount; ++f) {
     const Face& face = polytope.faces[f];
     if (face.normal.dot(vertex.w - polytope.vertices[face.v[0]].w) <= eps) {
-      polytope.faces[live++] = face;
+      if (live != f) polytope.faces[live] = face;
+      consider(live++);
       continue;
     }
-    if (removedCount + 3 > kEpaFaceCapacity) return false;
-    for (int e = 0; e < 3; ++e) removed[removedCount++] = {face.v[e], face.v[(e + 1) % 3]};
+    if (removedCount + 3 > kEpaFaceCapacity) return -1;
+    for (int e = 0; e < 3; ++e) removed[removedCount++] = makeEdge(face.v[e], face.v[(e + 1) % 3]);
   }
   polytope.faceCount = live;
   std::array<Edge, kEpaFaceCapacity> horizon;
   int horizonCount = 0;
   for (int e = 0; e < removedCount; ++e) {
-    const Edge reverse{removed[e].to, removed[e].from};
+    const Edge reverse = reversed(removed[e]);
     if (std::find(removed.begin(), removed.begin() + removedCount, reverse) == removed.begin() + removedCount) {
       horizon[horizonCount++] = removed[e];
     }
   }
   const int newIndex = polytope.vertexCount;
-  if (live + horizonCount > std::min(faceBudget, kEpaFaceCapacity) || newIndex >= kVertexCapacity) return false;
+  if (live + horizonCount > std::min(faceBudget, kEpaFaceCapacity) || newIndex >= kVertexCapacity) return -1;
   polytope.vertices[polytope.vertexCount++] = vertex;
-  for (int e = 0; e < horizonCount; ++e) polytope.addFace(horizon[e].from, horizon[e].to, newIndex);
-  return true;
+  for (int e = 0; e < horizonCount; ++e) {
+    polytope.addFace(edgeFrom(horizon[e]), edgeTo(horizon[e]), newIndex);
+    consider(polytope.faceCount - 1);
+  }
+  return closest;
 }
 
 EpaResult contactFromFace(const Polytope& polytope, const Face& face) {
@@ -203,14 +220,8 @@ EpaResult runEpa(const Simplex& start, SupportShape& a, SupportShape& b, const N
     const SimplexVertex vertex = supportOfDifference(a, b, face.normal);
     if (face.normal.dot(vertex.w) - face.distance <= tolerance) break;
     const Face kept = face;
-    if (!expand(polytope, vertex, options.maxEpaFaces, 1e-14 * size)) {
-      polytope.faces[0] = kept;  // budget spent: report the best face found
-      polytope.faceCount = 1;
-      closest = 0;
-      break;
-    }
-    const int next = polytope.closestFace();
-    if (next < 0 || !std::isfinite(polytope.faces[next].distance)) {
+    const int next = expand(polytope, vertex, options.maxEpaFaces, 1e-14 * size);
+    if (next < 0 || !std::isfinite(polytope.faces[next].distance)) {  // budget spent, or no face left
       polytope.faces[0] = kept;
       polytope.faceCount = 1;
       closest = 0;
