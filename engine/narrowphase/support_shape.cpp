@@ -8,20 +8,20 @@
 namespace physdbg {
 
 SupportShape::SupportShape(const Collider& collider, const Mat3& rotation, const Vec3& position)
-    : collider_(collider), rotation_(rotation), position_(position) {
+    : collider_(collider), kind_(collider.kind()), rotation_(rotation), position_(position) {
   const Aabb bounds = collider.localBounds();
   centre_ = position + rotation * bounds.center();
   size_ = bounds.halfExtents().norm();
-  if (collider.kind() == ColliderKind::Sphere) margin_ = static_cast<const SphereCollider&>(collider).radius();
-  if (collider.kind() == ColliderKind::Box) halfExtents_ = static_cast<const BoxCollider&>(collider).halfExtents();
+  if (kind_ == ColliderKind::Sphere) margin_ = static_cast<const SphereCollider&>(collider).radius();
+  if (kind_ == ColliderKind::Box) halfExtents_ = static_cast<const BoxCollider&>(collider).halfExtents();
   rotated_ = !(rotation == Mat3::Identity() && position == Vec3::Zero());
-  if (collider.kind() == ColliderKind::Capsule) margin_ = static_cast<const CapsuleCollider&>(collider).radius();
+  if (kind_ == ColliderKind::Capsule) margin_ = static_cast<const CapsuleCollider&>(collider).radius();
 }
 
 Vec3 SupportShape::support(const Vec3& direction) {
   const Vec3 local = rotated_ ? Vec3(rotation_.transpose() * direction) : direction;
   Vec3 point;
-  switch (collider_.kind()) {
+  switch (kind_) {
     case ColliderKind::Sphere: return position_;
     case ColliderKind::Box:  // same corner choice as BoxCollider::localSupport
       point = Vec3(local.x() < 0.0 ? -halfExtents_.x() : halfExtents_.x(),

@@ -23,6 +23,7 @@ class SupportShape {
 
  private:
   const Collider& collider_;
+  ColliderKind kind_;  // asked once: kind() is virtual and support() is GJK/EPA's inner call
   Mat3 rotation_;
   Vec3 position_;
   Vec3 centre_;
