@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <nlohmann/json.hpp>
 
 #include "bench/bullet_world.h"
+#include "bench/host_scaling.h"
 #include "engine/parallel/task_system.h"
-
-#include <nlohmann/json.hpp>
 
 namespace physdbg::bench {
 namespace {
@@ -61,6 +61,7 @@ std::vector<int> benchThreadCounts(const BenchOptions& options) {
 void addThreadFields(nlohmann::json& record, int threads, double msPerStep, std::optional<double> singleThreadMs) {
   record["threads"] = threads;
   if (threads > 1 && singleThreadMs && msPerStep > 0.0) record["scaling"] = *singleThreadMs / msPerStep;
+  if (threads > 1) record["host_scaling"] = measureHostScaling(threads);  // taken just after the run
 }
 
 double largestDisplacement(const EngineRun& run) {

@@ -30,7 +30,9 @@ EngineRun runBullet(const SceneDescription& scene, int steps, bool allowSleep);
 std::vector<int> benchThreadCounts(const BenchOptions& options);
 
 // Sets the record's "threads" and, after the single-thread run, "scaling":
-// that run's time over this one's (2 = twice as fast on `threads` threads).
+// that run's time over this one's (2 = twice as fast on `threads` threads);
+// on more than one thread also "host_scaling" (host_scaling.h), measured
+// right after the run, so a low "scaling" can be told from a busy host.
 void addThreadFields(nlohmann::json& record, int threads, double msPerStep, std::optional<double> singleThreadMs);
 
 // Largest distance a body moved between the start and the end.

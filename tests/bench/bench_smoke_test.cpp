@@ -29,7 +29,8 @@ TEST(Benchmarks, EveryBenchmarkPrintsTheCommonFields) {
 }
 
 // The scene benchmarks run one thread and every core (one row each, the
-// all-core one with its scaling), or only what --threads asks for.
+// all-core one with its scaling and the host's), or only what --threads
+// asks for.
 TEST(Benchmarks, SceneBenchmarksReportTheirThreads) {
   for (const Benchmark& benchmark : allBenchmarks()) {
     if (benchmark.name != "drop" && benchmark.name != "pyramid") continue;
@@ -40,6 +41,8 @@ TEST(Benchmarks, SceneBenchmarksReportTheirThreads) {
     benchmark.run(options, [&](const nlohmann::json& record) {
       threads.push_back(record.at("threads").get<int>());
       EXPECT_EQ(record.contains("scaling"), threads.back() > 1) << record.dump();
+      EXPECT_EQ(record.contains("host_scaling"), threads.back() > 1) << record.dump();
+      if (record.contains("host_scaling")) EXPECT_GT(record["host_scaling"].get<double>(), 0.0) << record.dump();
     });
     ASSERT_FALSE(threads.empty());
     EXPECT_EQ(threads.front(), 1);
