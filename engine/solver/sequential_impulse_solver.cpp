@@ -1,9 +1,11 @@
 #include "engine/solver/sequential_impulse_solver.h"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <map>
+#include <bit>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <optional>
 
@@ -36,6 +38,11 @@ void tangentBasis(const Vec3& normal, Vec3& first, Vec3& second) {
 
 // Eigenvalues below 1e-9 of the largest count as zero: the directions the
 // points cannot move in independently get no impulse.
+// Share of the largest magnitude involved that an approach case's test lets
+// a value fall below zero: far above the few ulps a 4x4 product rounds by,
+// far below any impulse that matters.
+constexpr double kApproachRounding = 1e-9;
+
 Eigen::Matrix4d pseudoInverse(const Eigen::Matrix4d& matrix) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(matrix);
   const Eigen::Vector4d values = eigen.eigenvalues();
@@ -44,6 +51,73 @@ Eigen::Matrix4d pseudoInverse(const Eigen::Matrix4d& matrix) {
   for (int i = 0; i < 4; ++i)
     if (values[i] > 1e-9 * largest) inverse[i] = 1.0 / values[i];
   return eigen.eigenvectors() * inverse.asDiagonal() * eigen.eigenvectors().transpose();
+}
+
+// The other cases of the approach solve, when neither every point nor none
+// pushes (a box a micro-radian off face on: a corner or two may arrive
+// first): each proper subset S of the points, the largest first, then in
+// mask order. Points outside S give back their impulse; those in S stop
+// exactly: M_SS change_S = -(target_S + M_S,rest change_rest). The first
+// subset whose impulses stay pushing and whose other points stay opening
+// (each up to rounding, as above) is the answer. Three or fewer points of a
+// face give a regular block, solved by LDLT; a solution that does not stop
+// its points (a singular block) is refused.
+// Solves the case where the points in `mask` push and stop exactly and the
+// others give their impulse back; false when it does not hold.
+bool tryApproachCase(const Eigen::Matrix4d& mass, const Eigen::Vector4d& target, const Eigen::Vector4d& impulse,
+                     int count, int mask, Eigen::Vector4d& change) {
+  const auto inside = [mask](int p) { return ((mask >> p) & 1) != 0; };
+  Eigen::Vector4d trial = Eigen::Vector4d::Zero();
+  for (int p = 0; p < count; ++p)
+    if (!inside(p)) trial[p] = -impulse[p];
+  // The subset's block, with 1 on the diagonal elsewhere (and 0 on the
+  // right), so one fixed-size factorisation serves every subset.
+  Eigen::Matrix4d block = Eigen::Matrix4d::Identity();
+  Eigen::Vector4d right = Eigen::Vector4d::Zero();
+  for (int i = 0; i < count; ++i) {
+    if (!inside(i)) continue;
+    right[i] = -(target[i] + mass.row(i).dot(trial));
+    for (int j = 0; j < count; ++j)
+      if (inside(j)) block(i, j) = mass(i, j);
+  }
+  const Eigen::Vector4d solved = block.ldlt().solve(right);
+  for (int p = 0; p < count; ++p)
+    if (inside(p)) trial[p] = solved[p];
+  const Eigen::Vector4d total = impulse + trial, velocity = target + mass * trial;
+  double scale = 0.0;
+  for (int p = 0; p < count; ++p)
+    scale = std::max({scale, std::abs(target[p]), std::abs(impulse[p]), std::abs(trial[p])});
+  const double allowed = kApproachRounding * scale;
+  for (int p = 0; p < count; ++p) {
+    // A singular block may leave its points moving: not this case.
+    if (inside(p) ? (total[p] < -allowed || std::abs(velocity[p]) > allowed) : velocity[p] < -allowed) return false;
+  }
+  change = trial;
+  return true;
+}
+
+// The other cases of the approach solve, when neither every point nor none
+// pushes (a box a micro-radian off face on: a corner or two may arrive
+// first). First the points the all-pushing answer left pushing (`allPush`,
+// usually right), then every proper subset, the largest first and in mask
+// order: points outside give their impulse back, points inside stop
+// exactly, and the first case whose impulses stay pushing and whose other
+// points stay opening (up to rounding, as above) is the answer. Three or
+// fewer points of a face give a regular block, solved by LDLT.
+bool solveMixedApproach(const Eigen::Matrix4d& mass, const Eigen::Vector4d& target, const Eigen::Vector4d& impulse,
+                        const Eigen::Vector4d& allPush, int count, Eigen::Vector4d& change) {
+  const int full = (1 << count) - 1;
+  int guess = 0;
+  for (int p = 0; p < count; ++p)
+    if (impulse[p] + allPush[p] > 0.0) guess |= 1 << p;
+  if (guess != 0 && guess != full && tryApproachCase(mass, target, impulse, count, guess, change)) return true;
+  for (int size = count - 1; size >= 1; --size) {
+    for (int mask = 1; mask < full; ++mask) {
+      if (mask == guess || std::popcount(static_cast<unsigned>(mask)) != size) continue;
+      if (tryApproachCase(mass, target, impulse, count, mask, change)) return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace
@@ -763,13 +837,6 @@ void SequentialImpulseSolver::solveNormals(ContactManifold& manifold, std::size_
 // Two of the complementarity cases are tried: every point pushing, and none
 // (the usual answer once the warm-started stopping impulse must be taken
 // back). Anything else is left to the point-by-point solve.
-namespace {
-// Share of the largest magnitude involved that a case's test lets a value
-// fall below zero: far above the few ulps a 4x4 product rounds by, far below
-// any impulse that matters.
-constexpr double kApproachRounding = 1e-9;
-}  // namespace
-
 bool SequentialImpulseSolver::solveApproachTogether(ContactManifold& manifold, std::size_t m, double substep) {
   const int count = manifold.pointCount;
   Eigen::Vector4d target = Eigen::Vector4d::Zero(), impulse = Eigen::Vector4d::Zero();
@@ -795,12 +862,17 @@ bool SequentialImpulseSolver::solveApproachTogether(ContactManifold& manifold, s
     for (int p = 0; p < count; ++p) result = std::max(result, std::abs(values[p]));
     return result;
   };
+  const Eigen::Matrix4d& mass = approachMass_[m];
   Eigen::Vector4d change = -(approachInverse_[m] * target);
   if (anyNegative(impulse + change, largest(impulse) + largest(change))) {
+    const Eigen::Vector4d allPush = change;
     // None pushing: removing every impulse must leave every point opening.
     change = -impulse;
-    const Eigen::Vector4d response = approachMass_[m] * change;
-    if (anyNegative(target + response, largest(target) + largest(response))) return false;
+    const Eigen::Vector4d response = mass * change;
+    if (anyNegative(target + response, largest(target) + largest(response)) &&
+        !solveMixedApproach(mass, target, impulse, allPush, count, change)) {
+      return false;
+    }
   }
   for (int p = 0; p < count; ++p) {
     PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];

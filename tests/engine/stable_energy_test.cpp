@@ -141,13 +141,14 @@ void expectBulletStopsAtTheNearFace(BulletShape shape, double tilt = 0.0) {
 
 TEST(StableEnergy, SphereBulletStopsAtTheNearFace) { expectBulletStopsAtTheNearFace(BulletShape::Sphere); }
 
-// Face on up to rounding: the four corners' gaps differ in the last bits,
-// and which of the approach solve's cases holds must not hang on their
-// signs (it did: 10.9 rad/s and a 0.28 m/s rebound at 1e-12 rad). Tilts of
-// 1e-6 rad and more still spin the box (the approach solve tries only two
-// of the sixteen push/no-push cases); see solveApproachTogether.
+// Face on up to rounding, or a micro-radian off: the four corners' gaps
+// differ in the last bits or a little more, and the approach solve must find
+// the case that holds (every corner pushing, none, or some) instead of
+// falling back to the point-by-point solve on the signs of zeros (it did:
+// 10.9 rad/s and a 0.28 m/s rebound at 1e-12 rad). A milliradian gives
+// 0.2 rad/s and 1.5 mm/s, a centiradian 2.1 rad/s and 1.5 cm/s.
 TEST(StableEnergy, BoxBulletTiltedByRoundingStopsAtTheNearFace) {
-  for (const double tilt : {1e-12, 1e-9}) {
+  for (const double tilt : {1e-12, 1e-9, 1e-6}) {
     SCOPED_TRACE(tilt);
     expectBulletStopsAtTheNearFace(BulletShape::Box, tilt);
   }
