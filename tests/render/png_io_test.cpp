@@ -2,8 +2,8 @@
 // input (truncation at every byte, huge declared sizes, byte flips, every
 // colour type and bit depth, interlacing).
 #include <gtest/gtest.h>
-
 #include <png.h>
+#include <unistd.h>
 
 #include <csetjmp>
 #include <filesystem>
@@ -11,6 +11,7 @@
 #include <optional>
 #include <random>
 #include <stdexcept>
+#include <string>
 
 #include "render/image.h"
 
@@ -25,8 +26,14 @@ Image randomImage(int width, int height, unsigned seed) {
   return image;
 }
 
+// Named after the test and the process: CTest runs tests side by side (and
+// two checkouts may run theirs at once), and two tests writing one
+// "bytes.png" read each other's half-written or removed file.
 std::string temporaryPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("physdbg_png_test_" + name)).string();
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  return (std::filesystem::temp_directory_path() /
+          ("physdbg_png_test_" + std::to_string(::getpid()) + "_" + test + "_" + name))
+      .string();
 }
 
 TEST(PngIo, RoundTripIsExactAtEveryLevel) {
