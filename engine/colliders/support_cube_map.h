@@ -5,8 +5,8 @@
 // vertex's normal cone is "settled": every direction that looks it up has
 // that vertex as its answer, with room for rounding, so the climb is skipped.
 //
-// Cells are cut finely enough that a typical vertex's normal cone holds a few
-// whole cells (about six cells a vertex, at most 32 x 32 a face), so on a
+// Cells are cut finely enough that a typical vertex's normal cone holds
+// whole cells (about 24 cells a vertex, at most 32 x 32 a face), so on a
 // round 256-vertex hull about half the lookups are settled and most of the
 // rest are one climbing step from the answer.
 #include <cmath>
@@ -18,7 +18,7 @@ namespace physdbg {
 
 class SupportCubeMap {
  public:
-  // A settled lookup's answer, or -1 for a start to climb from.
+  // The cell's vertex: the answer when settled, else where to start climbing.
   struct Entry {
     int vertex = 0;
     bool settled = false;

@@ -36,13 +36,13 @@ void tangentBasis(const Vec3& normal, Vec3& first, Vec3& second) {
   second = normal.cross(first);
 }
 
-// Eigenvalues below 1e-9 of the largest count as zero: the directions the
-// points cannot move in independently get no impulse.
 // Share of the largest magnitude involved that an approach case's test lets
 // a value fall below zero: far above the few ulps a 4x4 product rounds by,
 // far below any impulse that matters.
 constexpr double kApproachRounding = 1e-9;
 
+// Eigenvalues below 1e-9 of the largest count as zero: the directions the
+// points cannot move in independently get no impulse.
 Eigen::Matrix4d pseudoInverse(const Eigen::Matrix4d& matrix) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(matrix);
   const Eigen::Vector4d values = eigen.eigenvalues();
@@ -53,17 +53,16 @@ Eigen::Matrix4d pseudoInverse(const Eigen::Matrix4d& matrix) {
   return eigen.eigenvectors() * inverse.asDiagonal() * eigen.eigenvectors().transpose();
 }
 
-// The other cases of the approach solve, when neither every point nor none
-// pushes (a box a micro-radian off face on: a corner or two may arrive
-// first): each proper subset S of the points, the largest first, then in
-// mask order. Points outside S give back their impulse; those in S stop
-// exactly: M_SS change_S = -(target_S + M_S,rest change_rest). The first
-// subset whose impulses stay pushing and whose other points stay opening
-// (each up to rounding, as above) is the answer. Three or fewer points of a
-// face give a regular block, solved by LDLT; a solution that does not stop
-// its points (a singular block) is refused.
+// The largest magnitude among a manifold's `count` points.
+double largestOf(const Eigen::Vector4d& values, int count) {
+  double result = 0.0;
+  for (int p = 0; p < count; ++p) result = std::max(result, std::abs(values[p]));
+  return result;
+}
+
 // Solves the case where the points in `mask` push and stop exactly and the
-// others give their impulse back; false when it does not hold.
+// others give their impulse back: M_SS change_S = -(target_S + M_S,rest
+// change_rest). False when it does not hold.
 bool tryApproachCase(const Eigen::Matrix4d& mass, const Eigen::Vector4d& target, const Eigen::Vector4d& impulse,
                      int count, int mask, Eigen::Vector4d& change) {
   const auto inside = [mask](int p) { return ((mask >> p) & 1) != 0; };
@@ -84,9 +83,7 @@ bool tryApproachCase(const Eigen::Matrix4d& mass, const Eigen::Vector4d& target,
   for (int p = 0; p < count; ++p)
     if (inside(p)) trial[p] = solved[p];
   const Eigen::Vector4d total = impulse + trial, velocity = target + mass * trial;
-  double scale = 0.0;
-  for (int p = 0; p < count; ++p)
-    scale = std::max({scale, std::abs(target[p]), std::abs(impulse[p]), std::abs(trial[p])});
+  const double scale = std::max({largestOf(target, count), largestOf(impulse, count), largestOf(trial, count)});
   const double allowed = kApproachRounding * scale;
   for (int p = 0; p < count; ++p) {
     // A singular block may leave its points moving: not this case.
@@ -857,11 +854,7 @@ bool SequentialImpulseSolver::solveApproachTogether(ContactManifold& manifold, s
       if (values[p] < allowed) return true;
     return false;
   };
-  const auto largest = [count](const Eigen::Vector4d& values) {
-    double result = 0.0;
-    for (int p = 0; p < count; ++p) result = std::max(result, std::abs(values[p]));
-    return result;
-  };
+  const auto largest = [count](const Eigen::Vector4d& values) { return largestOf(values, count); };
   const Eigen::Matrix4d& mass = approachMass_[m];
   Eigen::Vector4d change = -(approachInverse_[m] * target);
   if (anyNegative(impulse + change, largest(impulse) + largest(change))) {
