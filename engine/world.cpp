@@ -17,6 +17,7 @@ namespace {
 // Indices per piece of a parallel loop: enough work that a piece outweighs
 // handing it to a thread (a pair test is ~1 us, a body's prediction ~0.1 us).
 constexpr std::size_t pairGrain = 32;
+constexpr std::size_t nearPairGrain = 8;  // a near pair runs the narrow phase
 constexpr std::size_t bodyGrain = 256;
 constexpr std::size_t staticRowGrain = 8;  // a row is up to n overlap tests
 
@@ -249,18 +250,23 @@ void World::findContacts(const StepContext& context) {
   stats_.contacts = static_cast<int>(contacts_.size());
 }
 
-// Writes into `answer` in place, and only for pairs it tests.
-World::PairOutcome World::testPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer) const {
+// Fat boxes overlap long before the shapes can touch: when even the tight
+// boxes, grown by how far the pair can close this step, stay apart, the
+// narrow phase has nothing to say. Most pairs miss by more than the two
+// bodies' reach shares, which settles them without the pair's own reach.
+World::PairOutcome World::screenPair(const BodyPair& pair, const StepContext& context) const {
   // A kinematic body passes through static ones. (Dense per-body flags: most
   // pairs end at the bounds, and need not touch the bodies themselves.)
   if (!dynamicInPair_[pair.a] && !dynamicInPair_[pair.b]) return PairOutcome::Skipped;
-  // Fat boxes overlap long before the shapes can touch: when even the tight
-  // boxes, grown by how far the pair can close this step, stay apart, the
-  // narrow phase has nothing to say. Most pairs miss by more than the two
-  // bodies' reach shares, which settles them without the pair's own reach.
   if (!reachBounds_[pair.a].overlaps(reachBounds_[pair.b])) return PairOutcome::BoundsRejected;
   const double reach = solver_->contactReach(bodyReaches_[pair.a], bodyReaches_[pair.b], context);
   if (!tightBounds_[pair.a].enlarged(reach).overlaps(tightBounds_[pair.b])) return PairOutcome::BoundsRejected;
+  return PairOutcome::Near;
+}
+
+// Writes into `answer` in place.
+World::PairOutcome World::answerPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer) const {
+  const double reach = solver_->contactReach(bodyReaches_[pair.a], bodyReaches_[pair.b], context);
   answer.reach = reach;
   answer.kept = nullptr;
   const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
@@ -282,7 +288,7 @@ World::PairOutcome World::testPair(const BodyPair& pair, const StepContext& cont
   return PairOutcome::Tested;
 }
 
-// What testPair needs of each body of a candidate pair alone, once per body:
+// What screenPair and answerPair need of each body of a candidate pair alone, once per body:
 // a body meets many pairs. Bodies do not move between the passes of a step,
 // but a pass after a wake has other pairs, so each pass measures anew.
 void World::measureBodies(const StepContext& context) {
@@ -306,15 +312,22 @@ void World::measureBodies(const StepContext& context) {
 void World::testPairs(const StepContext& context) {
   measureBodies(context);
   pairOutcomes_.resize(pairs_.size());
-  pairAnswers_.resize(pairs_.size());
-  carriedManifolds_.resize(pairs_.size());
   tasks_->parallelFor(pairs_.size(), pairGrain, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      pairOutcomes_[i] = testPair(pairs_[i], context, pairAnswers_[i]);
+    for (std::size_t i = begin; i < end; ++i) pairOutcomes_[i] = screenPair(pairs_[i], context);
+  });
+  nearPairs_.clear();
+  for (std::size_t i = 0; i < pairs_.size(); ++i)
+    if (pairOutcomes_[i] == PairOutcome::Near) nearPairs_.push_back(static_cast<std::uint32_t>(i));
+  pairAnswers_.resize(nearPairs_.size());
+  carriedManifolds_.resize(nearPairs_.size());
+  tasks_->parallelFor(nearPairs_.size(), nearPairGrain, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::uint32_t i = nearPairs_[k];
+      pairOutcomes_[i] = answerPair(pairs_[i], context, pairAnswers_[k]);
       if (pairOutcomes_[i] != PairOutcome::Tested) continue;
-      if (const ReusableContact* kept = pairAnswers_[i].kept)
+      if (const ReusableContact* kept = pairAnswers_[k].kept)
         carryManifold(*kept, bodies_[kept->pair.a].transform(), bodies_[kept->pair.b].transform(),
-                      carriedManifolds_[i]);
+                      carriedManifolds_[k]);
     }
   });
   if (offload_) testOffloadedPairs();
@@ -324,10 +337,11 @@ void World::testPairs(const StepContext& context) {
 void World::testOffloadedPairs() {
   offloadRequests_.clear();
   offloadPairs_.clear();
-  for (std::size_t i = 0; i < pairs_.size(); ++i) {
-    if (pairOutcomes_[i] != PairOutcome::Offloaded) continue;
-    offloadRequests_.push_back({pairs_[i].a, pairs_[i].b, pairAnswers_[i].reach});
-    offloadPairs_.push_back(i);
+  for (std::size_t k = 0; k < nearPairs_.size(); ++k) {
+    const BodyPair& pair = pairs_[nearPairs_[k]];
+    if (pairOutcomes_[nearPairs_[k]] != PairOutcome::Offloaded) continue;
+    offloadRequests_.push_back({pair.a, pair.b, pairAnswers_[k].reach});
+    offloadPairs_.push_back(k);
   }
   offloaded_.clear();
   if (offloadRequests_.empty()) return;
@@ -345,14 +359,15 @@ void World::gatherContacts(const StepContext& context) {
   prebuilt_.clear();
   candidateKept_.clear();
   std::size_t offloadedSoFar = 0;
-  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+  for (std::size_t i = 0, k = 0; i < pairs_.size(); ++i) {
     const PairOutcome outcome = pairOutcomes_[i];
     if (outcome == PairOutcome::Skipped) continue;
     if (outcome == PairOutcome::BoundsRejected) {
       ++stats_.boundsRejected;
       continue;
     }
-    const PairAnswer& test = pairAnswers_[i];
+    const PairAnswer& test = pairAnswers_[k];
+    const ContactManifold& carried = carriedManifolds_[k++];
     const Contact contact{pairs_[i].a, pairs_[i].b, test.result};
     if (test.kept)
       stats_.narrowPhase.addReused();
@@ -365,7 +380,7 @@ void World::gatherContacts(const StepContext& context) {
     if (outcome == PairOutcome::Offloaded)
       prebuilt_.push_back(&offloaded_[offloadedSoFar++].manifold);
     else
-      prebuilt_.push_back(test.kept ? &carriedManifolds_[i] : nullptr);
+      prebuilt_.push_back(test.kept ? &carried : nullptr);
     if (contact.result.status == ContactStatus::Separated && contact.result.distance > touchingGap) continue;
     contacts_.push_back(contact);
   }

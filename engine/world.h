@@ -218,27 +218,29 @@ class World {
   const std::vector<bool>& movableBodies();
   void updateBroadPhase(const StepContext& context);
   void findContacts(const StepContext& context);
-  // One candidate pair's narrow-phase answer. Pairs are tested in parallel,
-  // each into its own slot, then gathered in pair order (gatherContacts), so
-  // contacts, manifolds and counters come out as a serial pass makes them.
-  // The outcome lives apart from the answer: most pairs end at the bounds, so
-  // their one byte is all they write and all the gather reads. (A whole
-  // answer per pair, written by one thread and read by another, was megabytes
-  // of cache lines crossing cores each step: on two threads the pair loop's
-  // work grew 1.8 times and the loop ran no faster than on one.)
+  // Candidate pairs in two parallel passes, gathered in pair order
+  // (gatherContacts), so contacts, manifolds and counters come out as a
+  // serial pass makes them. screenPair settles most pairs at the bounds and
+  // writes one byte each; answerPair runs the narrow phase on the few left
+  // (nearPairs_), each into a dense slot. (A whole answer per pair, written
+  // by one thread and read by another, was megabytes of cache lines crossing
+  // cores each step; slots per candidate pair, 0.85 KB each and one in ten
+  // written, spread 4000 boxes' answers over 36 MB.)
   enum class PairOutcome : std::uint8_t {
     Skipped,
     BoundsRejected,
+    Near,  // passed screenPair; answerPair turns it into one of the two below
     Tested,
     Offloaded,  // the collision offload answers it (testOffloadedPairs)
   };
-  struct PairAnswer {  // written only for pairs tested or offloaded
+  struct PairAnswer {  // one per near pair, in pair order (nearPairs_)
     double reach = 0.0;
     ContactResult result;
     ContactResult reversed;                 // B-A, tested only with bruteForceBothOrders
     const ReusableContact* kept = nullptr;  // the last answer, carried to now (result and carriedManifolds_)
   };
-  PairOutcome testPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer) const;
+  PairOutcome screenPair(const BodyPair& pair, const StepContext& context) const;
+  PairOutcome answerPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer) const;
   void measureBodies(const StepContext& context);
   void testPairs(const StepContext& context);
   void testOffloadedPairs();
@@ -288,7 +290,8 @@ class World {
   std::unique_ptr<BroadPhase> broadPhase_;
   std::vector<BodyPair> pairs_;
   std::vector<PairOutcome> pairOutcomes_;    // per candidate pair, this pass (testPairs)
-  std::vector<PairAnswer> pairAnswers_;      // per candidate pair, for those tested
+  std::vector<std::uint32_t> nearPairs_;     // candidate pairs that passed screenPair, ascending (testPairs)
+  std::vector<PairAnswer> pairAnswers_;      // per near pair
   std::vector<char> inSomePair_;             // per body, this pass (measureBodies)
   std::vector<char> dynamicInPair_;          // per body in a pair, this pass (measureBodies)
   std::vector<Aabb> tightBounds_;            // per body in a pair, this pass (measureBodies)
@@ -297,10 +300,10 @@ class World {
   std::vector<Contact> candidates_;          // tested pairs, for the solver (gatherContacts)
   std::vector<double> reaches_;              // their contactReach
   std::vector<OffloadRequest> offloadRequests_;  // this pass's offloaded pairs (testOffloadedPairs)
-  std::vector<std::size_t> offloadPairs_;        // their index in pairs_
+  std::vector<std::size_t> offloadPairs_;        // their index in nearPairs_
   std::vector<OffloadedContact> offloaded_;      // the offload's answers
   std::vector<const ContactManifold*> prebuilt_;       // per candidate: its offloaded or carried manifold, or null
-  std::vector<ContactManifold> carriedManifolds_;      // per candidate pair whose last answer was taken again
+  std::vector<ContactManifold> carriedManifolds_;      // per near pair whose last answer was taken again
   KeptAnswers kept_;                                   // answers worth taking again
   std::vector<const ReusableContact*> candidateKept_;  // per candidate: the answer it took again, or null
   std::vector<PredictedMotion> predictions_;  // per body, this step (updateBroadPhase)
