@@ -8,6 +8,7 @@
 // the scalar numbers bit for bit. Slots a manifold does not use hold zeros.
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 
 #include "engine/solver/wide_contact_rows.h"
 
@@ -19,11 +20,6 @@ constexpr int lanes = simd::width;
 
 void setLanes(Lanes (&target)[3], int lane, const Vec3& value) {
   for (int axis = 0; axis < 3; ++axis) simd::setLane(target[axis], lane, value[axis]);
-}
-
-void setLanes(Lanes (&target)[3][3], int lane, const Mat3& value) {
-  for (int row = 0; row < 3; ++row)
-    for (int column = 0; column < 3; ++column) simd::setLane(target[row][column], lane, value(row, column));
 }
 
 void cross(const Lanes* a, const Lanes* b, Lanes* out) {
@@ -53,34 +49,71 @@ struct FrameLanes {
   Lanes positionA[3], positionB[3], directions[3][3];
   Lanes inertiaA[3][3], inertiaB[3][3], angularMaskA[3], angularMaskB[3];
   Lanes linearVelocityA[3], angularVelocityA[3], linearVelocityB[3], angularVelocityB[3];
-  Lanes inverseMassSum, staticFriction, dynamicFriction, restitution;
+  Lanes inverseMassA, inverseMassB, inverseMassSum, staticFriction, dynamicFriction, restitution;
 };
 
+// A whole frame or point is a run of doubles, so the lanes fill from whole
+// packets of each lane's struct, transposed (simd::gatherRuns), instead of
+// one double at a time: a packet read right after four one-double writes to
+// it waits for them, and those waits were about half of this file's time.
+constexpr int frameRun = sizeof(ManifoldFrame) / sizeof(double);
+static_assert(sizeof(ManifoldFrame) == 57 * sizeof(double) &&
+                  offsetof(ManifoldFrame, positionB) == 3 * sizeof(double) &&
+                  offsetof(ManifoldFrame, directions) == 6 * sizeof(double) &&
+                  offsetof(ManifoldFrame, inverseInertiaA) == 15 * sizeof(double) &&
+                  offsetof(ManifoldFrame, inverseInertiaB) == 24 * sizeof(double) &&
+                  offsetof(ManifoldFrame, angularMaskA) == 33 * sizeof(double) &&
+                  offsetof(ManifoldFrame, linearVelocityA) == 39 * sizeof(double) &&
+                  offsetof(ManifoldFrame, inverseMassA) == 51 * sizeof(double) &&
+                  offsetof(ManifoldFrame, material) == 54 * sizeof(double) &&
+                  offsetof(CombinedMaterial, staticFriction) == sizeof(double) &&
+                  offsetof(CombinedMaterial, dynamicFriction) == 2 * sizeof(double),
+              "frameLanes reads ManifoldFrame as one run of doubles in this order");
+constexpr int pointRun = sizeof(ManifoldPoint) / sizeof(double);
+static_assert(sizeof(ManifoldPoint) == 18 * sizeof(double) && offsetof(ManifoldPoint, pointB) == 3 * sizeof(double) &&
+                  offsetof(ManifoldPoint, localA) == 6 * sizeof(double) &&
+                  offsetof(ManifoldPoint, localB) == 9 * sizeof(double) &&
+                  offsetof(ManifoldPoint, separation) == 12 * sizeof(double) &&
+                  offsetof(ManifoldPoint, normalImpulse) == 14 * sizeof(double) &&
+                  offsetof(ManifoldPoint, tangentImpulse) == 15 * sizeof(double) &&
+                  offsetof(ManifoldPoint, stepNormalImpulse) == 17 * sizeof(double),
+              "slotInput reads ManifoldPoint as one run of doubles in this order");
+alignas(64) constexpr double emptyLane[std::max(frameRun, pointRun)] = {};
+
+void copyRun(const Lanes* run, int first, Lanes (&target)[3]) {
+  for (int axis = 0; axis < 3; ++axis) target[axis] = run[first + axis];
+}
+
+// Eigen's Mat3 is column-major: (row, column) at 3 column + row.
+void copyMatrix(const Lanes* run, int first, Lanes (&target)[3][3]) {
+  for (int row = 0; row < 3; ++row)
+    for (int column = 0; column < 3; ++column) target[row][column] = run[first + 3 * column + row];
+}
+
 FrameLanes frameLanes(const ManifoldFrame* frames, int count) {
+  const double* runs[lanes];
+  for (int lane = 0; lane < lanes; ++lane)
+    runs[lane] = lane < count ? reinterpret_cast<const double*>(&frames[lane]) : emptyLane;
+  Lanes run[frameRun];
+  simd::gatherRuns<frameRun>(runs, run);
   FrameLanes result;
-  const ManifoldFrame empty{Vec3::Zero(), Vec3::Zero(), {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()},
-                            Mat3::Zero(), Mat3::Zero(), Vec3::Zero(),
-                            Vec3::Zero(), Vec3::Zero(), Vec3::Zero(),
-                            Vec3::Zero(), Vec3::Zero(), 0.0,
-                            0.0,          0.0,          CombinedMaterial{}};
-  for (int lane = 0; lane < lanes; ++lane) {
-    const ManifoldFrame& frame = lane < count ? frames[lane] : empty;
-    setLanes(result.positionA, lane, frame.positionA);
-    setLanes(result.positionB, lane, frame.positionB);
-    for (int row = 0; row < 3; ++row) setLanes(result.directions[row], lane, frame.directions[row]);
-    setLanes(result.inertiaA, lane, frame.inverseInertiaA);
-    setLanes(result.inertiaB, lane, frame.inverseInertiaB);
-    setLanes(result.angularMaskA, lane, frame.angularMaskA);
-    setLanes(result.angularMaskB, lane, frame.angularMaskB);
-    setLanes(result.linearVelocityA, lane, frame.linearVelocityA);
-    setLanes(result.angularVelocityA, lane, frame.angularVelocityA);
-    setLanes(result.linearVelocityB, lane, frame.linearVelocityB);
-    setLanes(result.angularVelocityB, lane, frame.angularVelocityB);
-    simd::setLane(result.inverseMassSum, lane, frame.inverseMassSum);
-    simd::setLane(result.staticFriction, lane, frame.material.staticFriction);
-    simd::setLane(result.dynamicFriction, lane, frame.material.dynamicFriction);
-    simd::setLane(result.restitution, lane, frame.material.restitution);
-  }
+  copyRun(run, 0, result.positionA);
+  copyRun(run, 3, result.positionB);
+  for (int row = 0; row < 3; ++row) copyRun(run, 6 + 3 * row, result.directions[row]);
+  copyMatrix(run, 15, result.inertiaA);
+  copyMatrix(run, 24, result.inertiaB);
+  copyRun(run, 33, result.angularMaskA);
+  copyRun(run, 36, result.angularMaskB);
+  copyRun(run, 39, result.linearVelocityA);
+  copyRun(run, 42, result.angularVelocityA);
+  copyRun(run, 45, result.linearVelocityB);
+  copyRun(run, 48, result.angularVelocityB);
+  result.inverseMassA = run[51];
+  result.inverseMassB = run[52];
+  result.inverseMassSum = run[53];
+  result.restitution = run[54];
+  result.staticFriction = run[55];
+  result.dynamicFriction = run[56];
   return result;
 }
 
@@ -93,21 +126,23 @@ struct SlotInput {
 
 SlotInput slotInput(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds, int p) {
   SlotInput in;
-  const ManifoldPoint nothing{};
+  const double* runs[lanes];
   for (int lane = 0; lane < lanes; ++lane) {
     const bool present = lane < count && p < manifolds[members[lane]].pointCount;
-    const ManifoldPoint& point = present ? manifolds[members[lane]].points[p] : nothing;
-    setLanes(in.pointA, lane, point.pointA);
-    setLanes(in.pointB, lane, point.pointB);
-    setLanes(in.localA, lane, point.localA);
-    setLanes(in.localB, lane, point.localB);
-    simd::setLane(in.separation, lane, point.separation);
+    runs[lane] = present ? reinterpret_cast<const double*>(&manifolds[members[lane]].points[p]) : emptyLane;
     simd::setMaskLane(in.present, lane, present);
-    simd::setLane(in.normalImpulse, lane, point.normalImpulse);
-    simd::setLane(in.tangentImpulse[0], lane, point.tangentImpulse[0]);
-    simd::setLane(in.tangentImpulse[1], lane, point.tangentImpulse[1]);
-    simd::setLane(in.stepNormalImpulse, lane, point.stepNormalImpulse);
   }
+  Lanes run[pointRun];  // run[13] holds the feature id's bits: unused
+  simd::gatherRuns<pointRun>(runs, run);
+  copyRun(run, 0, in.pointA);
+  copyRun(run, 3, in.pointB);
+  copyRun(run, 6, in.localA);
+  copyRun(run, 9, in.localB);
+  in.separation = run[12];
+  in.normalImpulse = run[14];
+  in.tangentImpulse[0] = run[15];
+  in.tangentImpulse[1] = run[16];
+  in.stepNormalImpulse = run[17];
   return in;
 }
 
@@ -164,9 +199,8 @@ Lanes buildSlot(const FrameLanes& frame, const SlotInput& in, const ConstraintSe
 }  // namespace
 
 unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
-                            const ManifoldFrame* frames, const std::vector<ManifoldTangents>& tangents,
-                            const std::vector<SolverBody>& bodies, const ConstraintSettings& settings,
-                            WideManifolds& group) {
+                            const ManifoldFrame* frames, const std::vector<SolverBody>& bodies,
+                            const ConstraintSettings& settings, WideManifolds& group) {
   count = std::min(count, lanes);
   group.pointSlots = 0;
   group.linearLocks = false;
@@ -180,11 +214,6 @@ unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::
     group.bodyB[lane] = used ? manifold->b : WideManifolds::empty;
     group.writableA[lane] = used && bodies[manifold->a].movable;
     group.writableB[lane] = used && bodies[manifold->b].movable;
-    setLanes(group.direction[0], lane, used ? manifold->normal : zero);
-    setLanes(group.direction[1], lane, used ? tangents[m][0] : zero);
-    setLanes(group.direction[2], lane, used ? tangents[m][1] : zero);
-    simd::setLane(group.inverseMassA, lane, used ? frames[lane].inverseMassA : 0.0);
-    simd::setLane(group.inverseMassB, lane, used ? frames[lane].inverseMassB : 0.0);
     setLanes(group.linearMaskA, lane, used ? bodies[manifold->a].linearMask : zero);
     setLanes(group.linearMaskB, lane, used ? bodies[manifold->b].linearMask : zero);
     if (!used) continue;
@@ -193,6 +222,11 @@ unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::
                         bodies[manifold->b].linearMask != Vec3::Ones();
   }
   const FrameLanes frame = frameLanes(frames, count);
+  // The frame's directions are the manifold's normal and tangents.
+  for (int row = 0; row < 3; ++row)
+    for (int axis = 0; axis < 3; ++axis) group.direction[row][axis] = frame.directions[row][axis];
+  group.inverseMassA = frame.inverseMassA;
+  group.inverseMassB = frame.inverseMassB;
   unsigned bouncing = 0;
   for (int p = 0; p < group.pointSlots; ++p) {
     const SlotInput in = slotInput(members, count, manifolds, p);

@@ -82,12 +82,12 @@ using WideGroups = std::vector<WideManifolds, DefaultInitialisingAllocator<WideM
 // body) into `group`: their constraints, built straight into the lanes from
 // frames[lane] (wide_constraint_build.cpp) by the operations
 // buildPointConstraints does, in its order, so each lane holds the numbers it
-// would; their tangents; their current impulses. Returns a bit per lane
+// would; their directions (the frames' normal and tangents); their current
+// impulses. Returns a bit per lane
 // whose manifold has a point that may bounce (restitution not 0).
 unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
-                            const ManifoldFrame* frames, const std::vector<ManifoldTangents>& tangents,
-                            const std::vector<SolverBody>& bodies, const ConstraintSettings& settings,
-                            WideManifolds& group);
+                            const ManifoldFrame* frames, const std::vector<SolverBody>& bodies,
+                            const ConstraintSettings& settings, WideManifolds& group);
 
 // Every point's gap at the bodies' current poses (pointGaps, lane by lane)
 // into points[p].gap; 0 where a lane has no such point.

@@ -108,8 +108,8 @@ TEST(WideConstraintBuild, LanesHoldTheScalarConstraintsBitForBit) {
     std::vector<std::uint32_t> members(count);
     for (int lane = 0; lane < count; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
     WideManifolds group;
-    const unsigned bouncing = buildWideManifolds(members.data(), count, input.manifolds, input.frames.data(),
-                                                 input.tangents, input.bodies, settings, group);
+    const unsigned bouncing =
+        buildWideManifolds(members.data(), count, input.manifolds, input.frames.data(), input.bodies, settings, group);
     int mostPoints = 0;
     for (int lane = 0; lane < count; ++lane) {
       const ContactManifold& manifold = input.manifolds[lane];
@@ -174,8 +174,7 @@ TEST(WideConstraintBuild, LaneGapsMatchTheScalarGapsBitForBit) {
     std::vector<std::uint32_t> members(count);
     for (int lane = 0; lane < count; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
     WideManifolds group;
-    buildWideManifolds(members.data(), count, input.manifolds, input.frames.data(), input.tangents, input.bodies,
-                       settings, group);
+    buildWideManifolds(members.data(), count, input.manifolds, input.frames.data(), input.bodies, settings, group);
     measureWideGaps(group, input.bodies);
     for (int lane = 0; lane < count; ++lane) {
       const ContactManifold& manifold = input.manifolds[lane];
