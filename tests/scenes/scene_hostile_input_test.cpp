@@ -2,6 +2,7 @@
 // with a short message naming the file and the key, before anything large is
 // allocated, and never with anything but SceneError.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -91,7 +92,9 @@ TEST(SceneHostileInput, BytesThatAreNotJsonTextAreRefused) {
 }
 
 TEST(SceneHostileInput, OversizedFilesAreRefusedBeforeReading) {
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / "physdbg_oversized_scene.json";
+  // Named after the process: two checkouts testing at once must not share it.
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("physdbg_oversized_scene_" + std::to_string(::getpid()) + ".json");
   {
     std::ofstream file(path, std::ios::binary);
     file.seekp(static_cast<std::streamoff>(scene_limits::maxFileBytes));  // sparse: no disk used
