@@ -288,9 +288,10 @@ World::PairOutcome World::answerPair(const BodyPair& pair, const StepContext& co
   return PairOutcome::Tested;
 }
 
-// What screenPair and answerPair need of each body of a candidate pair alone, once per body:
-// a body meets many pairs. Bodies do not move between the passes of a step,
-// but a pass after a wake has other pairs, so each pass measures anew.
+// What screenPair and answerPair need of each body of a candidate pair
+// alone, once per body: a body meets many pairs. Bodies do not move between
+// the passes of a step, but a pass after a wake has other pairs, so each pass
+// measures anew.
 void World::measureBodies(const StepContext& context) {
   inSomePair_.assign(bodies_.size(), 0);
   for (const BodyPair& pair : pairs_) inSomePair_[pair.a] = inSomePair_[pair.b] = 1;
@@ -338,8 +339,8 @@ void World::testOffloadedPairs() {
   offloadRequests_.clear();
   offloadPairs_.clear();
   for (std::size_t k = 0; k < nearPairs_.size(); ++k) {
-    const BodyPair& pair = pairs_[nearPairs_[k]];
     if (pairOutcomes_[nearPairs_[k]] != PairOutcome::Offloaded) continue;
+    const BodyPair& pair = pairs_[nearPairs_[k]];
     offloadRequests_.push_back({pair.a, pair.b, pairAnswers_[k].reach});
     offloadPairs_.push_back(k);
   }
