@@ -12,45 +12,73 @@ namespace {
 
 constexpr int kVertexCapacity = kEpaFaceCapacity / 2 + 4;
 
-// An oriented edge packed in one word (from in the high half), so finding an
-// edge's reverse among the removed ones is a scan of plain integers.
-using Edge = std::uint64_t;
-
-Edge makeEdge(int from, int to) {
-  return static_cast<Edge>(static_cast<std::uint32_t>(from)) << 32 | static_cast<std::uint32_t>(to);
-}
-Edge reversed(Edge edge) { return edge << 32 | edge >> 32; }
-int edgeFrom(Edge edge) { return static_cast<int>(edge >> 32); }
-int edgeTo(Edge edge) { return static_cast<int>(edge & 0xffffffffu); }
-
+// A face's edge e runs from v[e] to v[(e + 1) % 3]. Its neighbour across
+// that edge is stored as 4 * face + (the neighbour's own edge index), so
+// the visible region is found by walking from face to face rather than by
+// testing every face, and its border comes out as an ordered loop.
 struct Face {
-  std::array<int, 3> v;
   Vec3 normal;
-  double distance;  // signed distance of the origin's projection; +inf when degenerate
+  std::array<int, 3> v;
+  std::array<int, 3> across;
+  bool live;
+};
+
+struct HorizonEdge {
+  int from, to;
+  int outside;  // 4 * face + edge of the face that stays, across this edge
 };
 
 struct Polytope {
   std::array<SimplexVertex, kVertexCapacity> vertices;
   std::array<Face, kEpaFaceCapacity> faces;
+  // Signed distance of the origin's projection per face slot, apart from the
+  // faces so the closest-face scan reads one contiguous row; +inf for a
+  // degenerate face and for a free slot.
+  std::array<double, kEpaFaceCapacity> distances;
+  std::array<int, kEpaFaceCapacity> freeSlots;  // slots of removed faces, reused first
   int vertexCount = 0;
-  int faceCount = 0;
+  int slotCount = 0;  // slots ever used: [0, slotCount) holds live and free ones
+  int freeCount = 0;
+  int liveCount = 0;
 
-  void addFace(int i, int j, int k) {
+  int takeSlot() { return freeCount > 0 ? freeSlots[--freeCount] : slotCount++; }
+  int capacityLeft() const { return kEpaFaceCapacity - slotCount + freeCount; }
+
+  void setFace(int slot, int i, int j, int k) {
+    Face& face = faces[slot];
+    face.v = {i, j, k};
+    face.live = true;
+    ++liveCount;
     const Vec3& p = vertices[i].w;
     const Vec3 n = (vertices[j].w - p).cross(vertices[k].w - p);
     const double length = n.norm();
     if (length == 0.0) {
-      faces[faceCount++] = {{i, j, k}, Vec3::Zero(), std::numeric_limits<double>::infinity()};
+      face.normal = Vec3::Zero();
+      distances[slot] = std::numeric_limits<double>::infinity();
       return;
     }
-    const Vec3 unit = n / length;
-    faces[faceCount++] = {{i, j, k}, unit, unit.dot(p)};
+    face.normal = n / length;
+    distances[slot] = face.normal.dot(p);
   }
 
+  void removeFace(int slot) {
+    faces[slot].live = false;
+    distances[slot] = std::numeric_limits<double>::infinity();
+    freeSlots[freeCount++] = slot;
+    --liveCount;
+  }
+
+  void link(int faceA, int edgeA, int faceB, int edgeB) {
+    faces[faceA].across[edgeA] = 4 * faceB + edgeB;
+    faces[faceB].across[edgeB] = 4 * faceA + edgeA;
+  }
+
+  // The first live slot of least distance, or -1 when every face is degenerate.
   int closestFace() const {
     int best = -1;
-    for (int f = 0; f < faceCount; ++f) {
-      if (best < 0 || faces[f].distance < faces[best].distance) best = f;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (int f = 0; f < slotCount; ++f) {
+      if (distances[f] < bestDistance) best = f, bestDistance = distances[f];
     }
     return best;
   }
@@ -120,61 +148,109 @@ void initialisePolytope(Polytope& polytope, const std::array<SimplexVertex, 4>& 
   const Vec3 inside = 0.25 * (points[0].w + points[1].w + points[2].w + points[3].w);
   constexpr std::array<std::array<int, 3>, 4> faces{{{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}}};
   const bool flip = (points[1].w - points[0].w).cross(points[2].w - points[0].w).dot(inside - points[0].w) > 0.0;
-  for (const auto& [i, j, k] : faces) {
+  polytope.slotCount = 4;
+  for (int f = 0; f < 4; ++f) {
+    const auto& [i, j, k] = faces[f];
     if (flip) {
-      polytope.addFace(i, k, j);
+      polytope.setFace(f, i, k, j);
     } else {
-      polytope.addFace(i, j, k);
+      polytope.setFace(f, i, j, k);
+    }
+  }
+  // Each edge's neighbour is the face that runs it the other way.
+  for (int f = 0; f < 4; ++f) {
+    for (int e = 0; e < 3; ++e) {
+      const auto& v = polytope.faces[f].v;
+      for (int g = 0; g < 4; ++g) {
+        for (int m = 0; m < 3; ++m) {
+          const auto& u = polytope.faces[g].v;
+          if (u[m] == v[(e + 1) % 3] && u[(m + 1) % 3] == v[e]) polytope.faces[f].across[e] = 4 * g + m;
+        }
+      }
     }
   }
 }
 
-// Removes every face that sees w and closes the horizon to it. Returns the
-// face closest to the origin afterwards (found in the same passes), or -1
-// when the budget leaves no room.
-int expand(Polytope& polytope, const SimplexVertex& vertex, int faceBudget, double eps) {
-  std::array<Edge, kEpaFaceCapacity> removed;  // left uninitialised: filled before use
-  int removedCount = 0;
-  int live = 0;  // faces that stay are compacted in the same pass
-  int closest = -1;  // the first face of least distance, as a scan would find
-  double closestDistance = 0.0;
-  const auto consider = [&](int f) {
-    if (closest < 0 || polytope.faces[f].distance < closestDistance)
-      closest = f, closestDistance = polytope.faces[f].distance;
+bool sees(const Polytope& polytope, int slot, const Vec3& w, double eps) {
+  const Face& face = polytope.faces[slot];
+  return face.normal.dot(w - polytope.vertices[face.v[0]].w) > eps;
+}
+
+// Removes the faces that see w and are connected to `first` (which does)
+// through faces that see it, and lists the border of that region in order,
+// each edge as the removed face ran it. Returns false when the border is
+// not one closed loop (rounding can make the seen region pinched or holed).
+bool removeSeenRegion(Polytope& polytope, int first, const Vec3& w, double eps,
+                      std::array<HorizonEdge, kEpaFaceCapacity>& horizon, int& horizonCount) {
+  struct Step {
+    int face;
+    int edge;  // next edge of `face` to cross
+    int last;  // edge after which `face` is done
   };
-  for (int f = 0; f < polytope.faceCount; ++f) {
-    const Face& face = polytope.faces[f];
-    if (face.normal.dot(vertex.w - polytope.vertices[face.v[0]].w) <= eps) {
-      if (live != f) polytope.faces[live] = face;
-      consider(live++);
+  std::array<Step, kEpaFaceCapacity> stack;
+  int depth = 0;
+  horizonCount = 0;
+  polytope.removeFace(first);
+  stack[depth++] = {first, 0, 3};
+  while (depth > 0) {
+    Step& step = stack[depth - 1];
+    if (step.edge == step.last) {
+      --depth;
       continue;
     }
-    if (removedCount + 3 > kEpaFaceCapacity) return -1;
-    for (int e = 0; e < 3; ++e) removed[removedCount++] = makeEdge(face.v[e], face.v[(e + 1) % 3]);
-  }
-  polytope.faceCount = live;
-  std::array<Edge, kEpaFaceCapacity> horizon;
-  int horizonCount = 0;
-  for (int e = 0; e < removedCount; ++e) {
-    const Edge reverse = reversed(removed[e]);
-    if (std::find(removed.begin(), removed.begin() + removedCount, reverse) == removed.begin() + removedCount) {
-      horizon[horizonCount++] = removed[e];
+    const int e = step.edge < 3 ? step.edge : step.edge - 3;
+    ++step.edge;
+    const Face& face = polytope.faces[step.face];
+    const int link = face.across[e];
+    const int neighbour = link >> 2, neighbourEdge = link & 3;
+    if (!polytope.faces[neighbour].live) continue;
+    if (sees(polytope, neighbour, w, eps)) {
+      polytope.removeFace(neighbour);
+      // Enter across neighbourEdge: walk its other two edges, in order.
+      stack[depth++] = {neighbour, neighbourEdge + 1, neighbourEdge + 3};
+    } else {
+      if (horizonCount == kEpaFaceCapacity) return false;
+      horizon[horizonCount++] = {face.v[e], face.v[e == 2 ? 0 : e + 1], link};
     }
   }
-  const int newIndex = polytope.vertexCount;
-  if (live + horizonCount > std::min(faceBudget, kEpaFaceCapacity) || newIndex >= kVertexCapacity) return -1;
-  polytope.vertices[polytope.vertexCount++] = vertex;
-  for (int e = 0; e < horizonCount; ++e) {
-    polytope.addFace(edgeFrom(horizon[e]), edgeTo(horizon[e]), newIndex);
-    consider(polytope.faceCount - 1);
+  for (int h = 0; h < horizonCount; ++h) {
+    if (horizon[h].to != horizon[(h + 1) % horizonCount].from) return false;
   }
-  return closest;
+  return horizonCount >= 3;
 }
 
-EpaResult contactFromFace(const Polytope& polytope, const Face& face) {
+// Removes the region that sees the new vertex, starting at the closest face
+// (which sees it: the caller has checked its gain), and closes the border
+// to it. Returns the closest face afterwards, or -1 when the polytope cannot
+// grow (the budget, or a border that is not one loop).
+int expand(Polytope& polytope, int closest, const SimplexVertex& vertex, int faceBudget, double eps) {
+  const int newIndex = polytope.vertexCount;
+  if (newIndex >= kVertexCapacity) return -1;
+  std::array<HorizonEdge, kEpaFaceCapacity> horizon;  // left uninitialised: filled before use
+  int horizonCount = 0;
+  if (!removeSeenRegion(polytope, closest, vertex.w, eps, horizon, horizonCount)) return -1;
+  if (polytope.liveCount + horizonCount > std::min(faceBudget, kEpaFaceCapacity) ||
+      horizonCount > polytope.capacityLeft()) {
+    return -1;
+  }
+  polytope.vertices[polytope.vertexCount++] = vertex;
+  std::array<int, kEpaFaceCapacity> added;
+  for (int h = 0; h < horizonCount; ++h) {
+    const int slot = polytope.takeSlot();
+    added[h] = slot;
+    polytope.setFace(slot, horizon[h].from, horizon[h].to, newIndex);
+    polytope.link(slot, 0, horizon[h].outside >> 2, horizon[h].outside & 3);
+  }
+  for (int h = 0; h < horizonCount; ++h) polytope.link(added[h], 1, added[(h + 1) % horizonCount], 2);
+  return polytope.closestFace();
+}
+
+EpaResult contactFromFace(const Polytope& polytope, int slot) {
+  const Face& face = polytope.faces[slot];
+  const double distance = polytope.distances[slot];
   const Vec3& a = polytope.vertices[face.v[0]].w;
   const Vec3 e0 = polytope.vertices[face.v[1]].w - a, e1 = polytope.vertices[face.v[2]].w - a;
-  const Vec3 p = face.normal * face.distance - a;
+  const Vec3 p = face.normal * distance - a;
   const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = p.dot(e0), d21 = p.dot(e1);
   const double denominator = d00 * d11 - d01 * d01;
   double v = 1.0 / 3.0, w = 1.0 / 3.0;
@@ -185,7 +261,7 @@ EpaResult contactFromFace(const Polytope& polytope, const Face& face) {
   const std::array<double, 3> weights{1.0 - v - w, v, w};
   EpaResult result;
   result.normal = face.normal;
-  result.depth = face.distance;
+  result.depth = distance;
   result.pointA = Vec3::Zero();
   result.pointB = Vec3::Zero();
   for (int i = 0; i < 3; ++i) {
@@ -195,42 +271,59 @@ EpaResult contactFromFace(const Polytope& polytope, const Face& face) {
   return result;
 }
 
+// A - B has no volume the polytope can use (flat, or faces too small to
+// have a normal): the shapes only touch. GJK stopped on the origin, so its
+// weights give the touching points.
+EpaResult touchingResult(const Simplex& start, const std::array<SimplexVertex, 4>& points, int count,
+                         const SupportShape& a, const SupportShape& b) {
+  EpaResult result;
+  if (count >= 3) {
+    const Vec3 normal = (points[1].w - points[0].w).cross(points[2].w - points[0].w);
+    if (normal.squaredNorm() > 0.0) result.normal = normal.normalized();
+  }
+  result.pointA = start.size > 0 ? start.pointA() : a.centre();
+  result.pointB = start.size > 0 ? start.pointB() : b.centre();
+  return result;
+}
+
 }  // namespace
 
 EpaResult runEpa(const Simplex& start, SupportShape& a, SupportShape& b, const NarrowPhaseOptions& options) {
   const double size = pairSize(a, b);
-  const double eps = 1e-10 * size;
   std::array<SimplexVertex, 4> points{};
-  const int count = buildTetrahedron(start, a, b, eps, points);
-  EpaResult result;
-  if (count < 4) {  // A - B is flat: the shapes can only touch
-    if (count >= 3) result.normal = (points[1].w - points[0].w).cross(points[2].w - points[0].w).normalized();
-    // GJK stopped on the origin, so its weights give the touching points.
-    result.pointA = start.size > 0 ? start.pointA() : a.centre();
-    result.pointB = start.size > 0 ? start.pointB() : b.centre();
-    return result;
-  }
+  const int count = buildTetrahedron(start, a, b, 1e-10 * size, points);
+  if (count < 4) return touchingResult(start, points, count, a, b);
   Polytope polytope;
   initialisePolytope(polytope, points);
-  const double tolerance = std::max(options.relativeTolerance * size, 1e-15 * size);
   int closest = polytope.closestFace();
+  if (closest < 0) return touchingResult(start, points, 3, a, b);
+  const double tolerance = std::max(options.relativeTolerance * size, 1e-15 * size);
+  // A face sees a point that lies above its plane by more than this; closer
+  // than this the point is on the plane within rounding.
+  const double seenEps = 1e-14 * size;
+  int iterations = 0;
   while (true) {
-    ++result.iterations;
+    ++iterations;
     const Face& face = polytope.faces[closest];
     const SimplexVertex vertex = supportOfDifference(a, b, face.normal);
-    if (face.normal.dot(vertex.w) - face.distance <= tolerance) break;
+    const double gain = face.normal.dot(vertex.w) - polytope.distances[closest];
+    // A face the new point does not see cannot be expanded: it is the
+    // answer even when the tolerance asks for less.
+    if (gain <= tolerance || gain <= seenEps) break;
     const Face kept = face;
-    const int next = expand(polytope, vertex, options.maxEpaFaces, 1e-14 * size);
-    if (next < 0 || !std::isfinite(polytope.faces[next].distance)) {  // budget spent, or no face left
+    const double keptDistance = polytope.distances[closest];
+    const int next = expand(polytope, closest, vertex, options.maxEpaFaces, seenEps);
+    if (next < 0) {  // budget spent, or the polytope cannot grow: report the closest face so far
       polytope.faces[0] = kept;
-      polytope.faceCount = 1;
+      polytope.distances[0] = keptDistance;
       closest = 0;
       break;
     }
     closest = next;
   }
-  const EpaResult contact = contactFromFace(polytope, polytope.faces[closest]);
-  return {contact.normal, contact.depth, contact.pointA, contact.pointB, result.iterations};
+  EpaResult result = contactFromFace(polytope, closest);
+  result.iterations = iterations;
+  return result;
 }
 
 }  // namespace physdbg

@@ -25,31 +25,42 @@ GjkResult runGjk(SupportShape& a, SupportShape& b, const NarrowPhaseOptions& opt
   GjkResult result;
   Vec3 v = a.centre() - b.centre();
   if (v.squaredNorm() <= overlapSquared) v = Vec3::UnitX();
-  Simplex& simplex = result.simplex;
+  // Two simplices in turn: each step reduces the current one, grown by the
+  // new support point, into the other, and steps back by dropping that
+  // point again; no step copies a simplex.
+  std::array<Simplex, 2> simplices;
+  int current = 0;
   while (result.iterations < options.maxGjkIterations) {
     ++result.iterations;
+    Simplex& simplex = simplices[current];
     const SimplexVertex vertex = supportOfDifference(a, b, -v);
     if (simplex.size > 0) {
       const double gain = v.squaredNorm() - v.dot(vertex.w);
       if (repeats(simplex, vertex.w) || gain <= options.relativeTolerance * v.squaredNorm()) break;
     }
-    const Simplex previous = simplex;
+    const bool grown = simplex.size > 0;
     simplex.push(vertex);
-    if (reduceToClosest(simplex, kFlatTolerance)) {
+    Simplex& reduced = simplices[1 - current];
+    if (reduceToClosest(simplex, reduced, kFlatTolerance)) {
       result.overlapping = true;
+      result.simplex = simplex;
       return result;
     }
-    const Vec3 next = simplex.closestPoint();
+    const Vec3 next = reduced.closestPoint();
     if (next.squaredNorm() <= overlapSquared) {
       result.overlapping = true;
+      result.simplex = reduced;
       return result;
     }
-    if (previous.size > 0 && next.squaredNorm() >= v.squaredNorm()) {  // no progress: keep the better one
-      simplex = previous;
+    if (grown && next.squaredNorm() >= v.squaredNorm()) {  // no progress: keep the better one
+      --simplex.size;
       break;
     }
+    current = 1 - current;
     v = next;
   }
+  const Simplex& simplex = simplices[current];
+  result.simplex = simplex;
   result.distance = v.norm();
   result.closest = v;
   result.pointA = simplex.pointA();

@@ -100,12 +100,11 @@ bool closestOnTetrahedron(const Simplex& s, double flatTolerance, Feature& best)
   return !outsideAny;
 }
 
-void applyFeature(Simplex& simplex, const Feature& feature) {
-  const std::array<SimplexVertex, 4> old = simplex.vertices;
-  simplex.size = feature.count;
+void applyFeature(const Simplex& simplex, const Feature& feature, Simplex& reduced) {
+  reduced.size = feature.count;
   for (int n = 0; n < feature.count; ++n) {
-    simplex.vertices[n] = old[feature.index[n]];
-    simplex.weights[n] = feature.weight[n];
+    reduced.vertices[n] = simplex.vertices[feature.index[n]];
+    reduced.weights[n] = feature.weight[n];
   }
 }
 
@@ -129,7 +128,7 @@ Vec3 Simplex::pointB() const {
   return sum;
 }
 
-bool reduceToClosest(Simplex& simplex, double flatTolerance) {
+bool reduceToClosest(Simplex& simplex, Simplex& reduced, double flatTolerance) {
   Feature feature;
   switch (simplex.size) {
     case 1: feature = makeFeature(simplex, {{0, 1.0}}); break;
@@ -141,7 +140,7 @@ bool reduceToClosest(Simplex& simplex, double flatTolerance) {
         return true;
       }
   }
-  applyFeature(simplex, feature);
+  applyFeature(simplex, feature, reduced);
   return false;
 }
 

@@ -25,10 +25,13 @@ struct Simplex {
   Vec3 pointB() const;
 };
 
-// Reduces `simplex` to the smallest face holding the point closest to the
-// origin and sets its weights. Returns true when the origin lies inside a
-// full-volume tetrahedron. Degenerate (collinear, flat) simplices fall back to
-// their edges or faces, so no weight is ever NaN.
-bool reduceToClosest(Simplex& simplex, double flatTolerance);
+// Writes into `reduced` the smallest face of `simplex` holding the point
+// closest to the origin, with its weights; `simplex` itself is left as it
+// was, so GJK can step back to it without a copy. Returns true, with
+// `reduced` untouched and `simplex`'s weights set, when the origin lies inside
+// a full-volume tetrahedron. Degenerate (collinear, flat) simplices fall back
+// to their edges or faces, so no weight is ever NaN. `reduced` must not be
+// `simplex`.
+bool reduceToClosest(Simplex& simplex, Simplex& reduced, double flatTolerance);
 
 }  // namespace physdbg
