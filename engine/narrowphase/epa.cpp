@@ -61,12 +61,14 @@ struct Polytope {
     distances[slot] = face.normal.dot(p);
   }
 
-  void removeFace(int slot) {
+  // A slot left unrecycled keeps its face's data until recycle() is called.
+  void removeFace(int slot, bool recycleNow = true) {
     faces[slot].live = false;
     distances[slot] = std::numeric_limits<double>::infinity();
-    freeSlots[freeCount++] = slot;
+    if (recycleNow) recycle(slot);
     --liveCount;
   }
+  void recycle(int slot) { freeSlots[freeCount++] = slot; }
 
   void link(int faceA, int edgeA, int faceB, int edgeB) {
     faces[faceA].across[edgeA] = 4 * faceB + edgeB;
@@ -142,32 +144,44 @@ int buildTetrahedron(const Simplex& start, SupportShape& a, SupportShape& b, dou
   return count;
 }
 
+// The starting tetrahedron's faces in both orientations, with each edge's
+// neighbour (the face that runs it the other way), worked out at compile time.
+struct Tetrahedron {
+  std::array<std::array<int, 3>, 4> faces;
+  std::array<std::array<int, 3>, 4> across;
+};
+
+constexpr Tetrahedron tetrahedron(bool flip) {
+  Tetrahedron t{{{{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}}}, {}};
+  if (flip) {
+    for (auto& face : t.faces) std::swap(face[1], face[2]);
+  }
+  for (int f = 0; f < 4; ++f) {
+    for (int e = 0; e < 3; ++e) {
+      for (int g = 0; g < 4; ++g) {
+        for (int m = 0; m < 3; ++m) {
+          if (t.faces[g][m] == t.faces[f][(e + 1) % 3] && t.faces[g][(m + 1) % 3] == t.faces[f][e]) {
+            t.across[f][e] = 4 * g + m;
+          }
+        }
+      }
+    }
+  }
+  return t;
+}
+
+constexpr std::array<Tetrahedron, 2> kTetrahedra{tetrahedron(false), tetrahedron(true)};
+
 void initialisePolytope(Polytope& polytope, const std::array<SimplexVertex, 4>& points) {
   for (int i = 0; i < 4; ++i) polytope.vertices[i] = points[i];
   polytope.vertexCount = 4;
   const Vec3 inside = 0.25 * (points[0].w + points[1].w + points[2].w + points[3].w);
-  constexpr std::array<std::array<int, 3>, 4> faces{{{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}}};
   const bool flip = (points[1].w - points[0].w).cross(points[2].w - points[0].w).dot(inside - points[0].w) > 0.0;
+  const Tetrahedron& t = kTetrahedra[flip ? 1 : 0];
   polytope.slotCount = 4;
   for (int f = 0; f < 4; ++f) {
-    const auto& [i, j, k] = faces[f];
-    if (flip) {
-      polytope.setFace(f, i, k, j);
-    } else {
-      polytope.setFace(f, i, j, k);
-    }
-  }
-  // Each edge's neighbour is the face that runs it the other way.
-  for (int f = 0; f < 4; ++f) {
-    for (int e = 0; e < 3; ++e) {
-      const auto& v = polytope.faces[f].v;
-      for (int g = 0; g < 4; ++g) {
-        for (int m = 0; m < 3; ++m) {
-          const auto& u = polytope.faces[g].v;
-          if (u[m] == v[(e + 1) % 3] && u[(m + 1) % 3] == v[e]) polytope.faces[f].across[e] = 4 * g + m;
-        }
-      }
-    }
+    polytope.setFace(f, t.faces[f][0], t.faces[f][1], t.faces[f][2]);
+    polytope.faces[f].across = t.across[f];
   }
 }
 
@@ -190,7 +204,7 @@ bool removeSeenRegion(Polytope& polytope, int first, const Vec3& w, double eps,
   std::array<Step, kEpaFaceCapacity> stack;
   int depth = 0;
   horizonCount = 0;
-  polytope.removeFace(first);
+  polytope.removeFace(first, false);  // the caller's fallback answer until the new faces are in
   stack[depth++] = {first, 0, 3};
   while (depth > 0) {
     Step& step = stack[depth - 1];
@@ -242,6 +256,7 @@ int expand(Polytope& polytope, int closest, const SimplexVertex& vertex, int fac
     polytope.link(slot, 0, horizon[h].outside >> 2, horizon[h].outside & 3);
   }
   for (int h = 0; h < horizonCount; ++h) polytope.link(added[h], 1, added[(h + 1) % horizonCount], 2);
+  polytope.recycle(closest);
   return polytope.closestFace();
 }
 
@@ -310,13 +325,11 @@ EpaResult runEpa(const Simplex& start, SupportShape& a, SupportShape& b, const N
     // A face the new point does not see cannot be expanded: it is the
     // answer even when the tolerance asks for less.
     if (gain <= tolerance || gain <= seenEps) break;
-    const Face kept = face;
     const double keptDistance = polytope.distances[closest];
     const int next = expand(polytope, closest, vertex, options.maxEpaFaces, seenEps);
     if (next < 0) {  // budget spent, or the polytope cannot grow: report the closest face so far
-      polytope.faces[0] = kept;
-      polytope.distances[0] = keptDistance;
-      closest = 0;
+      // expand() never reuses the expanded face's slot within the call, so it still holds it.
+      polytope.distances[closest] = keptDistance;
       break;
     }
     closest = next;
