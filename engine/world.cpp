@@ -320,15 +320,10 @@ void World::testPairs(const StepContext& context) {
   for (std::size_t i = 0; i < pairs_.size(); ++i)
     if (pairOutcomes_[i] == PairOutcome::Near) nearPairs_.push_back(static_cast<std::uint32_t>(i));
   pairAnswers_.resize(nearPairs_.size());
-  carriedManifolds_.resize(nearPairs_.size());
   tasks_->parallelFor(nearPairs_.size(), nearPairGrain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
       const std::uint32_t i = nearPairs_[k];
       pairOutcomes_[i] = answerPair(pairs_[i], context, pairAnswers_[k]);
-      if (pairOutcomes_[i] != PairOutcome::Tested) continue;
-      if (const ReusableContact* kept = pairAnswers_[k].kept)
-        carryManifold(*kept, bodies_[kept->pair.a].transform(), bodies_[kept->pair.b].transform(),
-                      carriedManifolds_[k]);
     }
   });
   if (offload_) testOffloadedPairs();
@@ -357,8 +352,7 @@ void World::gatherContacts(const StepContext& context) {
   const double touchingGap = solver_->touchingGap();
   candidates_.clear();
   reaches_.clear();
-  prebuilt_.clear();
-  candidateKept_.clear();
+  manifoldSources_.clear();
   std::size_t offloadedSoFar = 0;
   for (std::size_t i = 0, k = 0; i < pairs_.size(); ++i) {
     const PairOutcome outcome = pairOutcomes_[i];
@@ -367,8 +361,7 @@ void World::gatherContacts(const StepContext& context) {
       ++stats_.boundsRejected;
       continue;
     }
-    const PairAnswer& test = pairAnswers_[k];
-    const ContactManifold& carried = carriedManifolds_[k++];
+    const PairAnswer& test = pairAnswers_[k++];
     const Contact contact{pairs_[i].a, pairs_[i].b, test.result};
     if (test.kept)
       stats_.narrowPhase.addReused();
@@ -377,15 +370,14 @@ void World::gatherContacts(const StepContext& context) {
     if (settings_.bruteForceBothOrders) stats_.narrowPhase.add(test.reversed);
     candidates_.push_back(contact);
     reaches_.push_back(test.reach);
-    candidateKept_.push_back(test.kept);
     if (outcome == PairOutcome::Offloaded)
-      prebuilt_.push_back(&offloaded_[offloadedSoFar++].manifold);
+      manifoldSources_.push_back({&offloaded_[offloadedSoFar++].manifold, test.kept});
     else
-      prebuilt_.push_back(test.kept ? &carried : nullptr);
+      manifoldSources_.push_back({nullptr, test.kept});
     if (contact.result.status == ContactStatus::Separated && contact.result.distance > touchingGap) continue;
     contacts_.push_back(contact);
   }
-  stats_.manifoldPoints += solver_->addCandidates(candidates_, reaches_, bodies_, context, prebuilt_);
+  stats_.manifoldPoints += solver_->addCandidates(candidates_, reaches_, bodies_, context, manifoldSources_);
   keepAnswers();
 }
 
@@ -401,11 +393,12 @@ void World::keepAnswers() {
            (candidates_[candidate].a != manifold.a || candidates_[candidate].b != manifold.b))
       ++candidate;
     if (candidate == candidates_.size()) break;
-    if (candidateKept_[candidate]) {
+    const ManifoldSource& source = manifoldSources_[candidate];
+    if (source.kept) {
       kept_.carry({manifold.a, manifold.b});
       continue;
     }
-    if (prebuilt_[candidate] || !worthReusing(candidates_[candidate].result)) continue;
+    if (source.built || !worthReusing(candidates_[candidate].result)) continue;
     ReusableContact& entry = kept_.fresh({manifold.a, manifold.b});
     entry.a = bodies_[manifold.a].transform();
     entry.b = bodies_[manifold.b].transform();

@@ -237,7 +237,7 @@ class World {
     double reach = 0.0;
     ContactResult result;
     ContactResult reversed;                 // B-A, tested only with bruteForceBothOrders
-    const ReusableContact* kept = nullptr;  // the last answer, carried to now (result and carriedManifolds_)
+    const ReusableContact* kept = nullptr;  // the last answer, carried to now (result here, manifold by the solver)
   };
   PairOutcome screenPair(const BodyPair& pair, const StepContext& context) const;
   PairOutcome answerPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer) const;
@@ -302,10 +302,8 @@ class World {
   std::vector<OffloadRequest> offloadRequests_;  // this pass's offloaded pairs (testOffloadedPairs)
   std::vector<std::size_t> offloadPairs_;        // their index in nearPairs_
   std::vector<OffloadedContact> offloaded_;      // the offload's answers
-  std::vector<const ContactManifold*> prebuilt_;       // per candidate: its offloaded or carried manifold, or null
-  std::vector<ContactManifold> carriedManifolds_;      // per near pair whose last answer was taken again
-  KeptAnswers kept_;                                   // answers worth taking again
-  std::vector<const ReusableContact*> candidateKept_;  // per candidate: the answer it took again, or null
+  std::vector<ManifoldSource> manifoldSources_;  // per candidate: its offloaded manifold or kept answer, if any
+  KeptAnswers kept_;                             // answers worth taking again
   std::vector<PredictedMotion> predictions_;  // per body, this step (updateBroadPhase)
   std::vector<StaticRowCounts> staticRows_;   // per body, this pass (testStaticPairs)
   std::vector<Contact> contacts_;  // this step's touching pairs

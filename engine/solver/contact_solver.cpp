@@ -26,7 +26,7 @@ SubstepContext substepContext(const StepContext& step, int count, double contact
 
 int ContactSolver::addCandidates(const std::vector<Contact>& candidates, const std::vector<double>& reaches,
                                  const std::vector<RigidBody>& bodies, const StepContext&,
-                                 const std::vector<const ContactManifold*>&) {
+                                 const std::vector<ManifoldSource>&) {
   int points = 0;
   for (std::size_t i = 0; i < candidates.size(); ++i)
     points += addCandidate(candidates[i], bodies[candidates[i].a], bodies[candidates[i].b], reaches[i]);

@@ -18,6 +18,19 @@
 #include "engine/solver/step_context.h"
 
 namespace physdbg {
+struct ReusableContact;
+
+// Where a candidate's manifold comes from when the solver need not build it:
+// `built` by a collision offload (collision_offload.h), else `kept`, the last
+// answer taken again (contact_reuse.h), carried to the bodies' poses straight
+// into the solver's own slot. Both null: the solver builds it.
+struct ManifoldSource {
+  const ContactManifold* built = nullptr;
+  const ReusableContact* kept = nullptr;
+};
+}  // namespace physdbg
+
+namespace physdbg {
 
 struct NarrowPhaseOptions;
 
@@ -77,12 +90,12 @@ class ContactSolver {
   // candidates[i]'s contactReach: keeps what addCandidate on each in turn
   // would, which is what this default does. A solver may spread the work over
   // step.tasks as long as the result does not depend on how it is split.
-  // `prebuilt` is empty, or holds per candidate the manifold a collision
-  // offload (collision_offload.h) built for it, or null where none did; a
-  // solver with manifolds uses those instead of building its own.
+  // `sources` is empty, or holds per candidate where its manifold comes
+  // from (ManifoldSource); a solver with manifolds uses those instead of
+  // building its own.
   virtual int addCandidates(const std::vector<Contact>& candidates, const std::vector<double>& reaches,
                             const std::vector<RigidBody>& bodies, const StepContext& step,
-                            const std::vector<const ContactManifold*>& prebuilt);
+                            const std::vector<ManifoldSource>& sources);
 
   // Solves `contacts` (the touching ones) or the kept candidates, and moves
   // every movable body to the end of the step.

@@ -3,7 +3,9 @@
 // built in parallel. Each kept candidate has its own slot in manifolds_, in
 // pair order, and each piece its own scratch, so manifolds_ is what
 // addCandidate on each in turn gives, for any thread count.
-// A manifold the GPU collision stage built arrives prebuilt and is only kept.
+// A manifold the GPU collision stage built arrives prebuilt and is only
+// copied; a kept answer is carried to today's poses straight into its slot.
+#include "engine/contacts/contact_reuse.h"
 #include "engine/parallel/task_system.h"
 #include "engine/solver/sequential_impulse_solver.h"
 
@@ -17,7 +19,7 @@ constexpr std::size_t notKept = ~std::size_t{0};
 
 int SequentialImpulseSolver::addCandidates(const std::vector<Contact>& candidates, const std::vector<double>& reaches,
                                            const std::vector<RigidBody>& bodies, const StepContext& step,
-                                           const std::vector<const ContactManifold*>& prebuilt) {
+                                           const std::vector<ManifoldSource>& sources) {
   // Which candidates are kept, and where each goes: decided first, so the
   // manifolds are built straight into manifolds_ in parallel (building them
   // aside and appending was a serial copy of every manifold, 600 bytes each).
@@ -35,8 +37,13 @@ int SequentialImpulseSolver::addCandidates(const std::vector<Contact>& candidate
     for (std::size_t i = begin; i < end; ++i) {
       if (candidateSlot_[i] == notKept) continue;
       ContactManifold& manifold = manifolds_[candidateSlot_[i]];
-      if (!prebuilt.empty() && prebuilt[i] != nullptr) {
-        manifold = *prebuilt[i];
+      if (!sources.empty() && sources[i].built != nullptr) {
+        manifold = *sources[i].built;
+        continue;
+      }
+      if (!sources.empty() && sources[i].kept != nullptr) {
+        const ReusableContact& kept = *sources[i].kept;
+        carryManifold(kept, bodies[kept.pair.a].transform(), bodies[kept.pair.b].transform(), manifold);
         continue;
       }
       const Contact& contact = candidates[i];

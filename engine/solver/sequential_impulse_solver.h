@@ -59,7 +59,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   // per piece, then keeps them in pair order (sequential_impulse_candidates.cpp).
   int addCandidates(const std::vector<Contact>& candidates, const std::vector<double>& reaches,
                     const std::vector<RigidBody>& bodies, const StepContext& step,
-                    const std::vector<const ContactManifold*>& prebuilt) override;
+                    const std::vector<ManifoldSource>& sources) override;
   SolverStepReport solve(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                          const std::vector<Contact>& contacts, const StepContext& step) override;
   const std::vector<Contact>& eventContacts(const std::vector<Contact>& contacts) override;
