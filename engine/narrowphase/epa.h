@@ -16,10 +16,13 @@ struct EpaResult {
 inline constexpr int kEpaFaceCapacity = 512;
 
 // Grows GJK's simplex to a full tetrahedron when it has fewer than 4
-// independent points (touching, flat or zero-size shapes), then expands:
-// every face that sees the new support point goes and the horizon is closed
-// to it. Stops when the support point gains less than the tolerance over the
-// closest face, when it cannot grow, or when the face budget is spent.
+// independent points (touching, flat or zero-size shapes), then expands: the
+// closest face and the faces that see the new support point connected to it
+// go (found by walking across edges, not by testing every face), and their
+// border is closed to the point. Stops when the support point gains less
+// than the tolerance over the closest face, when it cannot grow (the face
+// budget is spent, or rounding leaves a border that is not one loop), and
+// reports the closest face so far.
 EpaResult runEpa(const Simplex& start, SupportShape& a, SupportShape& b, const NarrowPhaseOptions& options);
 
 }  // namespace physdbg
