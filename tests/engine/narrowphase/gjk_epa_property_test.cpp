@@ -125,5 +125,33 @@ TEST(GjkEpaProperty, RandomHullsAgreeWithSeparatingAxes) {
   EXPECT_GT(penetrating, 100);
 }
 
+// Deep overlaps of round hulls make EPA's polytope large (a dozen or more
+// expansions, faces seen in wide regions), where walking from face to face
+// must find every face that has to go.
+TEST(GjkEpaProperty, DeepOverlapsOfRoundHullsAgreeWithSeparatingAxes) {
+  std::mt19937 rng(2026);
+  std::normal_distribution<double> gaussian(0.0, 1.0);
+  std::uniform_real_distribution<double> position(-0.4, 0.4);
+  std::vector<std::unique_ptr<ConvexMeshCollider>> meshes;
+  for (int m = 0; m < 4; ++m) {
+    std::vector<Vec3> cloud;
+    for (int i = 0; i < 32; ++i) {
+      cloud.push_back(Vec3(gaussian(rng), gaussian(rng), gaussian(rng)).normalized().cwiseProduct(Vec3(0.6, 0.5, 0.4)));
+    }
+    meshes.push_back(std::make_unique<ConvexMeshCollider>(cloud));
+  }
+  int penetrating = 0;
+  for (int i = 0; i < 80; ++i) {
+    const ConvexMeshCollider& a = *meshes[i % meshes.size()];
+    const ConvexMeshCollider& b = *meshes[(i + 1 + i / 4) % meshes.size()];
+    const Transform ta{Vec3::Zero(), testing::randomRotation(rng)};
+    const Transform tb{Vec3(position(rng), position(rng), position(rng)), testing::randomRotation(rng)};
+    SCOPED_TRACE(i);
+    const ContactResult r = collide(a, ta, b, tb);
+    checkPair(meshPolytope(a, ta), meshPolytope(b, tb), r, penetrating);
+  }
+  EXPECT_EQ(penetrating, 80);
+}
+
 }  // namespace
 }  // namespace physdbg
