@@ -18,6 +18,8 @@
 #include "engine/solver/step_context.h"
 
 namespace physdbg {
+
+struct NarrowPhaseOptions;
 struct ReusableContact;
 
 // Where a candidate's manifold comes from when the solver need not build it:
@@ -28,11 +30,6 @@ struct ManifoldSource {
   const ContactManifold* built = nullptr;
   const ReusableContact* kept = nullptr;
 };
-}  // namespace physdbg
-
-namespace physdbg {
-
-struct NarrowPhaseOptions;
 
 // Where a moving body's broad-phase box goes this step, and the displacement
 // the tree uses to stretch its fat box ahead of the motion.

@@ -37,12 +37,13 @@ int SequentialImpulseSolver::addCandidates(const std::vector<Contact>& candidate
     for (std::size_t i = begin; i < end; ++i) {
       if (candidateSlot_[i] == notKept) continue;
       ContactManifold& manifold = manifolds_[candidateSlot_[i]];
-      if (!sources.empty() && sources[i].built != nullptr) {
-        manifold = *sources[i].built;
+      const ManifoldSource source = sources.empty() ? ManifoldSource{} : sources[i];
+      if (source.built != nullptr) {
+        manifold = *source.built;
         continue;
       }
-      if (!sources.empty() && sources[i].kept != nullptr) {
-        const ReusableContact& kept = *sources[i].kept;
+      if (source.kept != nullptr) {
+        const ReusableContact& kept = *source.kept;
         carryManifold(kept, bodies[kept.pair.a].transform(), bodies[kept.pair.b].transform(), manifold);
         continue;
       }
