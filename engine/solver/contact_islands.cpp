@@ -1,6 +1,7 @@
 #include "engine/solver/contact_islands.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "engine/disjoint_sets.h"
 
@@ -9,55 +10,68 @@ namespace {
 
 constexpr std::uint32_t none = ~0u;
 
+// Counts into run starts: counts[i] becomes where run i begins, and a last
+// entry holds the total.
+void countsToStarts(std::vector<std::uint32_t>& counts) {
+  std::uint32_t start = 0;
+  for (std::uint32_t& count : counts) start += std::exchange(count, start);
+  counts.push_back(start);
+}
+
 }  // namespace
 
-// Two passes, counting then filling, so each island's lists are allocated
-// once: this runs every step, for hundreds of small islands.
-std::vector<ContactIsland> buildContactIslands(const std::vector<ContactManifold>& manifolds,
-                                               const std::vector<bool>& movable) {
+// Two passes, counting then filling each island's run in place.
+void buildContactIslands(const std::vector<ContactManifold>& manifolds, const std::vector<bool>& movable,
+                         ContactIslands& islands) {
   DisjointSets sets(movable.size());
   for (const ContactManifold& manifold : manifolds)
     if (movable[manifold.a] && movable[manifold.b]) sets.unite(manifold.a, manifold.b);
-  std::vector<std::uint32_t> islandOf(movable.size(), none);  // by root body
-  std::vector<std::uint32_t> manifoldIsland(manifolds.size(), none);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> counts;  // manifolds, bodies
-  std::vector<bool> listed(movable.size(), false);
+  islands.islandOf_.assign(movable.size(), none);  // by root body
+  islands.manifoldIsland_.assign(manifolds.size(), none);
+  islands.listed_.assign(movable.size(), 0);
+  std::vector<std::uint32_t>& manifoldStarts = islands.manifoldStarts_;
+  std::vector<std::uint32_t>& bodyStarts = islands.bodyStarts_;
+  manifoldStarts.clear();
+  bodyStarts.clear();
   for (std::uint32_t m = 0; m < manifolds.size(); ++m) {
     const ContactManifold& manifold = manifolds[m];
     const std::uint32_t body = movable[manifold.a] ? manifold.a : manifold.b;
     if (!movable[body]) continue;
     const std::uint32_t root = sets.find(body);
-    if (islandOf[root] == none) {
-      islandOf[root] = static_cast<std::uint32_t>(counts.size());
-      counts.emplace_back(0, 0);
+    std::uint32_t& island = islands.islandOf_[root];
+    if (island == none) {
+      island = static_cast<std::uint32_t>(manifoldStarts.size());
+      manifoldStarts.push_back(0);
+      bodyStarts.push_back(0);
     }
-    manifoldIsland[m] = islandOf[root];
-    ++counts[islandOf[root]].first;
+    islands.manifoldIsland_[m] = island;
+    ++manifoldStarts[island];
     for (std::uint32_t id : {manifold.a, manifold.b}) {
-      if (!movable[id] || listed[id]) continue;
-      listed[id] = true;
-      ++counts[islandOf[root]].second;
+      if (!movable[id] || islands.listed_[id]) continue;
+      islands.listed_[id] = 1;
+      ++bodyStarts[island];
     }
   }
-  std::vector<ContactIsland> islands(counts.size());
-  for (std::size_t i = 0; i < islands.size(); ++i) {
-    islands[i].manifolds.reserve(counts[i].first);
-    islands[i].bodies.reserve(counts[i].second);
-  }
+  countsToStarts(manifoldStarts);
+  countsToStarts(bodyStarts);
+  islands.manifolds_.resize(manifoldStarts.back());
+  islands.bodies_.resize(bodyStarts.back());
+  islands.manifoldFill_.assign(manifoldStarts.begin(), manifoldStarts.end() - 1);
+  islands.bodyFill_.assign(bodyStarts.begin(), bodyStarts.end() - 1);
   // The fill meets bodies in the same order as the count: it clears each
   // body's mark as it lists it, so each body is listed once.
   for (std::uint32_t m = 0; m < manifolds.size(); ++m) {
-    if (manifoldIsland[m] == none) continue;
-    ContactIsland& island = islands[manifoldIsland[m]];
-    island.manifolds.push_back(m);
+    const std::uint32_t island = islands.manifoldIsland_[m];
+    if (island == none) continue;
+    islands.manifolds_[islands.manifoldFill_[island]++] = m;
     for (std::uint32_t id : {manifolds[m].a, manifolds[m].b}) {
-      if (!movable[id] || !listed[id]) continue;
-      listed[id] = false;
-      island.bodies.push_back(id);
+      if (!movable[id] || !islands.listed_[id]) continue;
+      islands.listed_[id] = 0;
+      islands.bodies_[islands.bodyFill_[island]++] = id;
     }
   }
-  for (ContactIsland& island : islands) std::sort(island.bodies.begin(), island.bodies.end());
-  return islands;
+  for (std::size_t i = 0; i + 1 < bodyStarts.size(); ++i)
+    std::sort(islands.bodies_.begin() + bodyStarts[i], islands.bodies_.begin() + bodyStarts[i + 1]);
 }
 
 }  // namespace physdbg

@@ -347,12 +347,13 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
                                             : std::vector<double>(manifolds.size(), 0.0);
   lastSubstep_.resize(bodies.size(), 0.0);
   updateCalmTimes(bodies.size(), step.dt);
-  const std::vector<ContactIsland> islands = buildContactIslands(manifolds, movable);
+  buildContactIslands(manifolds, movable, islands_);
+  const ContactIslands& islands = islands_;
   // Each island's substeps, and its warm start rescaled to them.
   std::vector<SubstepContext> substeps(islands.size());
   std::vector<char> kinematic(islands.size(), 0);
   forEach(islands.size(), 16, [&](std::size_t i) {
-    const ContactIsland& island = islands[i];
+    const ContactIsland island = islands[i];
     kinematic[i] = touchesKinematic(bodies, manifolds, island);
     const bool calm = !kinematic[i] && (restsAlone(manifolds, island) || restsTogether(manifolds, island));
     substeps[i] = chooseSubsteps(bodies, manifolds, island, loads, g, step, calm);
@@ -360,7 +361,8 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
     rescaleWarmStart(manifolds, island, movable, substeps[i].h);
     for (std::uint32_t m : island.manifolds) seedNewContact(manifolds[m], loads[m], touching_[m], g, substeps[i].h);
   });
-  std::vector<IslandWork> batches = batchIslands(islands, substeps, kinematic);
+  batchIslands(islands, substeps, kinematic);
+  const std::span<IslandWork> batches(batches_.data(), batchCount_);
   // A batch that touches a kinematic body moves it through its own substeps
   // (kinematicNeighbours), so those take turns; the others run side by side.
   std::vector<std::size_t> parallel, serial;
@@ -375,7 +377,7 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
   }
   std::vector<bool> inIsland(bodies.size(), false);
   for (const IslandWork& batch : batches) {
-    for (std::uint32_t id : batch.island.bodies) inIsland[id] = true;
+    for (std::uint32_t id : batch.bodies) inIsland[id] = true;
     report.largestPenetration = std::max(report.largestPenetration, batch.largestPenetration);
   }
   const SubstepContext base =
@@ -414,29 +416,33 @@ void SequentialImpulseSolver::integrateFreeBodies(std::vector<RigidBody>& bodies
 // island's colours and result do not depend on which batch it is in; the
 // cut depends on manifold counts alone, never on the thread count.
 // Batches follow the island order, and each keeps its manifolds ascending.
-std::vector<SequentialImpulseSolver::IslandWork> SequentialImpulseSolver::batchIslands(
-    const std::vector<ContactIsland>& islands, const std::vector<SubstepContext>& substeps,
-    const std::vector<char>& kinematic) const {
-  std::vector<IslandWork> batches;
+void SequentialImpulseSolver::batchIslands(const ContactIslands& islands, const std::vector<SubstepContext>& substeps,
+                                           const std::vector<char>& kinematic) {
+  batchCount_ = 0;
   std::map<std::pair<int, double>, std::size_t> open;  // by substep count and frequency
   for (std::size_t i = 0; i < islands.size(); ++i) {
     const std::pair<int, double> key{substeps[i].count, substeps[i].contactHertz};
-    std::size_t index = batches.size();
+    std::size_t index = batchCount_;
     if (!kinematic[i]) index = open.try_emplace(key, index).first->second;
-    if (index == batches.size()) {
-      batches.emplace_back().substeps = substeps[i];
-      batches.back().touchesKinematic = kinematic[i] != 0;
+    if (index == batchCount_) {
+      if (batchCount_ == batches_.size()) batches_.emplace_back();
+      IslandWork& batch = batches_[batchCount_++];
+      batch.manifolds.clear();
+      batch.bodies.clear();
+      batch.substeps = substeps[i];
+      batch.touchesKinematic = kinematic[i] != 0;
     }
-    ContactIsland& batch = batches[index].island;
-    batch.manifolds.insert(batch.manifolds.end(), islands[i].manifolds.begin(), islands[i].manifolds.end());
-    batch.bodies.insert(batch.bodies.end(), islands[i].bodies.begin(), islands[i].bodies.end());
+    IslandWork& batch = batches_[index];
+    const ContactIsland island = islands[i];
+    batch.manifolds.insert(batch.manifolds.end(), island.manifolds.begin(), island.manifolds.end());
+    batch.bodies.insert(batch.bodies.end(), island.bodies.begin(), island.bodies.end());
     if (!kinematic[i] && batch.manifolds.size() >= batchManifolds) open.erase(key);
   }
-  for (IslandWork& batch : batches) {
-    std::sort(batch.island.manifolds.begin(), batch.island.manifolds.end());
-    std::sort(batch.island.bodies.begin(), batch.island.bodies.end());
+  for (std::size_t b = 0; b < batchCount_; ++b) {
+    IslandWork& batch = batches_[b];
+    std::sort(batch.manifolds.begin(), batch.manifolds.end());
+    std::sort(batch.bodies.begin(), batch.bodies.end());
   }
-  return batches;
 }
 
 // One batch of islands, start to end: colours, constraints, the solve, the
@@ -445,11 +451,11 @@ std::vector<SequentialImpulseSolver::IslandWork> SequentialImpulseSolver::batchI
 void SequentialImpulseSolver::runBatch(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                        std::vector<ContactManifold>& manifolds, IslandWork& work) {
   const std::vector<std::uint32_t> kinematic =
-      work.touchesKinematic ? kinematicNeighbours(bodies, manifolds, work.island) : std::vector<std::uint32_t>{};
+      work.touchesKinematic ? kinematicNeighbours(bodies, manifolds, work.island()) : std::vector<std::uint32_t>{};
   planIsland(bodies, manifolds, movable, work);
   solveIsland(bodies, manifolds, work, kinematic);
-  for (std::uint32_t id : work.island.bodies) lastSubstep_[id] = work.substeps.h;
-  work.largestPenetration = largestPenetration(manifolds, work.island);
+  for (std::uint32_t id : work.bodies) lastSubstep_[id] = work.substeps.h;
+  work.largestPenetration = largestPenetration(manifolds, work.island());
 }
 
 // Colours, each colour's manifolds simd::width to a group (the speculative
@@ -457,13 +463,14 @@ void SequentialImpulseSolver::runBatch(std::vector<RigidBody>& bodies, const std
 // constraint, packed into its group's lanes or kept for its single manifold.
 void SequentialImpulseSolver::planIsland(const std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
                                          const std::vector<bool>& movable, IslandWork& work) {
-  ConstraintColouring colouring = colourConstraints(manifolds, work.island.manifolds, movable);
+  ConstraintColouring colouring = colourConstraints(manifolds, work.manifolds, movable);
+  work.singles.clear();
   work.overflow = std::move(colouring.overflow);
   work.colours.assign(colouring.colours.size(), ColourWork{});
   std::vector<std::uint32_t> wideMembers;  // every group's manifolds, group after group
   std::vector<std::size_t> groupStarts;    // where each group's begin in wideMembers, then the end
-  wideMembers.reserve(work.island.manifolds.size());
-  groupStarts.reserve(work.island.manifolds.size() / simd::width + colouring.colours.size() + 1);
+  wideMembers.reserve(work.manifolds.size());
+  groupStarts.reserve(work.manifolds.size() / simd::width + colouring.colours.size() + 1);
   for (std::size_t c = 0; c < colouring.colours.size(); ++c) {
     ColourWork& colour = work.colours[c];
     const std::size_t first = wideMembers.size();
@@ -482,7 +489,7 @@ void SequentialImpulseSolver::planIsland(const std::vector<RigidBody>& bodies, s
 
 void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
                                           IslandWork& work, const std::vector<std::uint32_t>& kinematic) {
-  const ContactIsland& island = work.island;
+  const ContactIsland island = work.island();
   const SubstepContext& substeps = work.substeps;
   measureGaps(manifolds, work);
   for (int substep = 0; substep < substeps.count; ++substep) {
@@ -761,7 +768,7 @@ std::vector<std::uint32_t> SequentialImpulseSolver::kinematicNeighbours(const st
   return kinematic;
 }
 
-void SequentialImpulseSolver::integratePositions(const std::vector<std::uint32_t>& ids, double h) {
+void SequentialImpulseSolver::integratePositions(std::span<const std::uint32_t> ids, double h) {
   forEach(ids.size(), 256, [&](std::size_t i) {
     SolverBody& body = solverBodies_[ids[i]];
     const Eigen::Vector4d before = body.motion.orientation.coeffs();

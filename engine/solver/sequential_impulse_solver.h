@@ -85,8 +85,11 @@ class SequentialImpulseSolver final : public ContactSolver {
     std::size_t firstGroup = 0, groupCount = 0;  // in IslandWork::groups
     std::vector<std::uint32_t> scalar;
   };
+  // Kept from step to step (batches_), so each batch's lists and groups
+  // reuse their storage: a batch's groups are tens of kilobytes.
   struct IslandWork {
-    ContactIsland island;
+    std::vector<std::uint32_t> manifolds, bodies;  // its islands' together, ascending
+    ContactIsland island() const { return {manifolds, bodies}; }
     SubstepContext substeps;
     std::vector<ColourWork> colours;
     std::vector<std::uint32_t> overflow;
@@ -116,9 +119,9 @@ class SequentialImpulseSolver final : public ContactSolver {
                         const std::vector<bool>& movable, double substep) const;
   void integrateFreeBodies(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                            const std::vector<bool>& inIsland, const SubstepContext& substeps);
-  std::vector<IslandWork> batchIslands(const std::vector<ContactIsland>& islands,
-                                       const std::vector<SubstepContext>& substeps,
-                                       const std::vector<char>& kinematic) const;
+  // Into batches_, whose first batchCount_ entries are this step's.
+  void batchIslands(const ContactIslands& islands, const std::vector<SubstepContext>& substeps,
+                    const std::vector<char>& kinematic);
   void runBatch(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                 std::vector<ContactManifold>& manifolds, IslandWork& work);
   void planIsland(const std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
@@ -161,7 +164,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   // except where a heavy body rests on a much lighter one (massRatioLimit).
   std::vector<std::pair<double, double>> supportMassScales(const std::vector<ContactManifold>& manifolds) const;
   void integrateVelocities(const ContactIsland& island, double h);
-  void integratePositions(const std::vector<std::uint32_t>& ids, double h);
+  void integratePositions(std::span<const std::uint32_t> ids, double h);
   std::vector<std::uint32_t> kinematicNeighbours(const std::vector<RigidBody>& bodies,
                                                  const std::vector<ContactManifold>& manifolds,
                                                  const ContactIsland& island);
@@ -219,6 +222,9 @@ class SequentialImpulseSolver final : public ContactSolver {
   std::vector<double> lastSubstep_;               // per body: the substep it took last step (0: none yet)
   std::vector<double> calmTime_;                  // per body: s it has begun steps in contact and calm
   std::vector<std::pair<double, double>> massScales_;  // per manifold, from supportMassScales
+  ContactIslands islands_;                             // this step's, from solveManifolds
+  std::vector<IslandWork> batches_;                    // [0, batchCount_) this step's
+  std::size_t batchCount_ = 0;
   const TaskSystem* tasks_ = nullptr;  // this step's threads (StepContext::tasks)
 };
 
