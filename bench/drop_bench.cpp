@@ -31,6 +31,7 @@ void runDrop(int count, DropShape shape, int steps, const BenchOptions& options,
                                         count, ours.msPerStep, peer.ran ? "bullet 3.24 btDbvt+SI(10)" : "",
                                         peer.msPerStep);
     addThreadFields(record, threads, ours.msPerStep, singleThreadMs);
+    addStageFields(record, ours, steps);
     if (threads == 1) singleThreadMs = ours.msPerStep;
     record["solver"] = solverKindName(options.solver.value_or(drop.scene.world.solver.kind));
     record["steps"] = steps;

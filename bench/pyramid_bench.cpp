@@ -23,6 +23,7 @@ void runPyramidBenchmark(const BenchOptions& options, const BenchSink& sink) {
     nlohmann::json record = benchRecord("pyramid/base" + std::to_string(base), base * (base + 1) / 2,
                                         ours.msPerStep, peer.ran ? "bullet 3.24 btDbvt+SI(10)" : "", peer.msPerStep);
     addThreadFields(record, threads, ours.msPerStep, singleThreadMs);
+    addStageFields(record, ours, steps);
     if (threads == 1) singleThreadMs = ours.msPerStep;
     record["solver"] = solverKindName(options.solver.value_or(scene.world.solver.kind));
     record["steps"] = steps;

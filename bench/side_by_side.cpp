@@ -31,7 +31,10 @@ EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options
   World world = buildWorld(scene, offload);
   EngineRun run;
   for (const RigidBody& body : world.bodies()) run.startPositions.push_back(body.position());
-  run.msPerStep = millisecondsPerStep(steps, [&] { world.step(); });
+  run.msPerStep = millisecondsPerStep(steps, [&] {
+    world.step();
+    run.profile += world.lastStepStats().profile;
+  });
   for (const RigidBody& body : world.bodies()) {
     run.finalPositions.push_back(body.position());
     if (!body.isStatic()) run.kineticEnergy += body.kineticEnergy();
@@ -56,6 +59,12 @@ std::vector<int> benchThreadCounts(const BenchOptions& options) {
   const int everyCore = TaskSystem::hardwareThreads();
   if (options.threads) return {*options.threads == 0 ? everyCore : *options.threads};
   return everyCore > 1 ? std::vector<int>{1, everyCore} : std::vector<int>{1};
+}
+
+void addStageFields(nlohmann::json& record, const EngineRun& ours, int steps) {
+  nlohmann::json stages = nlohmann::json::object();
+  for (const ProfileStage& stage : profileStages(ours.profile)) stages[stage.name] = 1e3 * stage.seconds / steps;
+  record["ours_stage_ms"] = stages;
 }
 
 void addThreadFields(nlohmann::json& record, int threads, double msPerStep, std::optional<double> singleThreadMs) {

@@ -2,12 +2,12 @@
 // Runs one scene in physdbg and in Bullet for the same number of steps and
 // keeps what the scene benchmarks compare: time per step, final kinetic
 // energy and final positions (in scene body order).
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <vector>
 
-#include <nlohmann/json_fwd.hpp>
-
 #include "bench/bench.h"
+#include "engine/step_profile.h"
 #include "scenes/scene.h"
 
 namespace physdbg::bench {
@@ -17,6 +17,7 @@ struct EngineRun {
   double msPerStep = 0.0;
   double kineticEnergy = 0.0;
   std::vector<Vec3> startPositions, finalPositions;
+  StepProfile profile;  // physdbg: summed over the steps
 };
 
 // With options.solver, physdbg runs the scene under that solver, on
@@ -28,6 +29,11 @@ EngineRun runBullet(const SceneDescription& scene, int steps, bool allowSleep);
 // when given (0 read as every core), else 1 and every core (just 1 on a
 // one-core machine). Bullet runs once, single-threaded, as it is built.
 std::vector<int> benchThreadCounts(const BenchOptions& options);
+
+// physdbg's mean ms per step in each stage of World::step (step_profile.h),
+// as record["ours_stage_ms"]: which stages bound a scene, and, set beside the
+// other thread counts' rows, which gain from threads.
+void addStageFields(nlohmann::json& record, const EngineRun& ours, int steps);
 
 // Sets the record's "threads" and, after the single-thread run, "scaling":
 // that run's time over this one's (2 = twice as fast on `threads` threads);

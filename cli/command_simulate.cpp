@@ -1,15 +1,18 @@
 // physdbg simulate: runs a scene without rendering; summary, CSV trace,
 // state hash, contact events.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <string>
+#include <string_view>
 
 #include "cli/arguments.h"
 #include "cli/collision_device.h"
-#include "cli/limits.h"
 #include "cli/commands.h"
 #include "cli/common_options.h"
 #include "cli/csv_output.h"
+#include "cli/limits.h"
 #include "cli/numerical_faults.h"
 #include "cli/output_folder.h"
 #include "cli/state_hash.h"
@@ -72,6 +75,20 @@ void printStepHash(const World& world) {
   std::printf("step %d hash %s\n", world.stepCount(), hexHash(worldStateHash(world)).c_str());
 }
 
+// Mean ms per step in each stage (step_profile.h), in step order.
+void printStages(const StepProfile& profile, int steps) {
+  std::printf("stages (mean ms per step):");
+  const char* separator = " ";
+  for (const ProfileStage& stage : profileStages(profile)) {
+    if (std::string_view(stage.name) == "total") continue;
+    std::string name = stage.name;
+    std::replace(name.begin(), name.end(), '_', ' ');
+    std::printf("%s%s %.4f", separator, name.c_str(), 1e3 * stage.seconds / std::max(steps, 1));
+    separator = ", ";
+  }
+  std::printf("\n");
+}
+
 }  // namespace
 
 int runSimulate(const std::vector<std::string>& args) {
@@ -113,11 +130,13 @@ int runSimulate(const std::vector<std::string>& args) {
                             : 0;
 
   double stepSeconds = 0;
+  StepProfile profile;
   for (int step = 0; step < steps; ++step) {
     const auto start = std::chrono::steady_clock::now();
     world.step();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stepSeconds += seconds;
+    profile += world.lastStepStats().profile;
     if (trace) trace->write(world);
     if (series) series->write(measureSeries(world, 1e3 * seconds));
     if (hashEvery > 0 && (world.stepCount() % hashEvery == 0 || step + 1 == steps)) printStepHash(world);
@@ -133,6 +152,7 @@ int runSimulate(const std::vector<std::string>& args) {
               steps, scene.world.dt, world.time());
   std::printf("step time %.4f ms (mean) on %d thread%s, final kinetic energy %.6g J\n", 1e3 * stepSeconds / steps,
               world.threadCount(), world.threadCount() == 1 ? "" : "s", kineticEnergy);
+  printStages(profile, steps);
   const StepStats& stats = world.lastStepStats();
   std::printf(
       "last step: %d awake (%d with axis locks), %d sleeping, %d candidate pairs, %d contacts, %d manifold "

@@ -10,6 +10,7 @@
 #include "engine/disjoint_sets.h"
 #include "engine/narrowphase/narrow_phase.h"
 #include "engine/parallel/task_system.h"
+#include "engine/stage_timer.h"
 
 namespace physdbg {
 namespace {
@@ -103,16 +104,25 @@ const DynamicAabbTree* World::tree() const {
 // (the design's order), sequential impulses inside its substeps.
 void World::step() {
   stats_ = StepStats{};
+  StepProfile& profile = stats_.profile;
+  const StageTimer whole(profile.total);
   const StepContext context{settings_.dt, settings_.gravity, tasks_.get()};
-  applyForces();  // gravity, user forces and impulses
-  solver_->beginStep(bodies_, movableBodies(), context);
-  freezeNonFiniteBodies();
-  updateBroadPhase(context);  // fat boxes follow the bodies that moved
-  findContacts(context);      // candidate pairs, then the narrow phase on each
+  {
+    const StageTimer timer(profile.forces);
+    applyForces();  // gravity, user forces and impulses
+    solver_->beginStep(bodies_, movableBodies(), context);
+    freezeNonFiniteBodies();
+  }
+  {
+    const StageTimer timer(profile.broadPhase);
+    updateBroadPhase(context);  // fat boxes follow the bodies that moved
+  }
+  findContacts(context);  // candidate pairs, then the narrow phase on each
   // A body woken by a touch had no pairs with what else it rests on (asleep,
   // its proxy made none): find them before solving, or it would fall a step.
   while (wakeTouchedBodies()) findContacts(context);
   solveContacts(context);  // responses, then positions
+  const StageTimer timer(profile.afterSolve);
   moveKinematicBodies(context);
   events_.update(solver_->eventContacts(contacts_), dormantPairs(), listener_);
   if (keepHistory_) history_.add(solver_->touchedPoints(contacts_));
@@ -238,15 +248,28 @@ void World::updateBroadPhase(const StepContext& context) {
 }
 
 void World::findContacts(const StepContext& context) {
-  broadPhase_->findPairs(pairs_);
+  StepProfile& profile = stats_.profile;
+  {
+    const StageTimer timer(profile.pairs);
+    broadPhase_->findPairs(pairs_);
+  }
   stats_.broadPhase = broadPhase_->stats();
   stats_.candidatePairs = static_cast<int>(pairs_.size());
   contacts_.clear();
   solver_->clearContacts();
-  testPairs(context);
-  gatherContacts(context);
+  {
+    const StageTimer timer(profile.narrowPhase);
+    testPairs(context);
+  }
+  {
+    const StageTimer timer(profile.manifolds);
+    gatherContacts(context);
+  }
   stats_.manifolds = static_cast<int>(solver_->manifolds().size());
-  if (!settings_.skipStaticPairs) testStaticPairs();
+  if (!settings_.skipStaticPairs) {
+    const StageTimer timer(profile.narrowPhase);
+    testStaticPairs();
+  }
   stats_.contacts = static_cast<int>(contacts_.size());
 }
 
@@ -462,7 +485,12 @@ bool World::wakeTouchedBodies() {
 }
 
 void World::solveContacts(const StepContext& context) {
-  const SolverStepReport report = solver_->solve(bodies_, movableBodies(), contacts_, context);
+  SolverStepReport report;
+  {
+    const StageTimer timer(stats_.profile.solver);
+    report = solver_->solve(bodies_, movableBodies(), contacts_, context);
+  }
+  stats_.profile.solverIslands = report.islandSeconds;
   stats_.responses = report.responses;
   stats_.largestPenetration = report.largestPenetration;
   stats_.substeps = report.substeps;

@@ -23,6 +23,7 @@
 #include "engine/narrowphase/narrow_phase_options.h"
 #include "engine/solver/contact_solver.h"
 #include "engine/solver/solver_settings.h"
+#include "engine/step_profile.h"
 
 namespace physdbg {
 
@@ -116,6 +117,7 @@ struct StepStats {
   double contactHertz = 0;        // sequential impulses: the stiffest contact frequency any island used
   NarrowPhaseCounters narrowPhase;
   BroadPhaseStats broadPhase;
+  StepProfile profile;  // seconds per stage (step_profile.h)
 };
 
 class World {

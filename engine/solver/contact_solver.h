@@ -43,6 +43,7 @@ struct SolverStepReport {
   double largestPenetration = 0.0;  // left after the step, m (sequential impulses)
   int substeps = 0;                 // the most any island took this step
   double contactHertz = 0.0;        // the stiffest contact frequency any island used
+  double islandSeconds = 0.0;       // wall time spent solving islands, the rest being set-up
 };
 
 // One body's share of a pair's contact reach (ContactSolver::bodyReach).

@@ -13,6 +13,7 @@
 #include "engine/parallel/task_system.h"
 #include "engine/solver/constraint_colouring.h"
 #include "engine/solver/resting_load.h"
+#include "engine/stage_timer.h"
 
 namespace physdbg {
 namespace {
@@ -367,10 +368,13 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
   // (kinematicNeighbours), so those take turns; the others run side by side.
   std::vector<std::size_t> parallel, serial;
   for (std::size_t i = 0; i < batches.size(); ++i) (batches[i].touchesKinematic ? serial : parallel).push_back(i);
-  forEach(parallel.size(), 1, [&](std::size_t k) { runBatch(bodies, movable, manifolds, batches[parallel[k]]); });
-  for (std::size_t i : serial) runBatch(bodies, movable, manifolds, batches[i]);
-  // The report in island order.
   SolverStepReport report;
+  {
+    const StageTimer timer(report.islandSeconds);
+    forEach(parallel.size(), 1, [&](std::size_t k) { runBatch(bodies, movable, manifolds, batches[parallel[k]]); });
+    for (std::size_t i : serial) runBatch(bodies, movable, manifolds, batches[i]);
+  }
+  // The report in island order.
   for (const SubstepContext& island : substeps) {
     report.substeps = std::max(report.substeps, island.count);
     report.contactHertz = std::max(report.contactHertz, island.contactHertz);

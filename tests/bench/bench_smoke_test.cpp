@@ -43,6 +43,15 @@ TEST(Benchmarks, SceneBenchmarksReportTheirThreads) {
       EXPECT_EQ(record.contains("scaling"), threads.back() > 1) << record.dump();
       EXPECT_EQ(record.contains("host_scaling"), threads.back() > 1) << record.dump();
       if (record.contains("host_scaling")) EXPECT_GT(record["host_scaling"].get<double>(), 0.0) << record.dump();
+      // Where physdbg's step time went, stage by stage, adding up to the step.
+      const nlohmann::json& stages = record.at("ours_stage_ms");
+      double staged = 0.0;
+      for (const char* name :
+           {"forces", "broad_phase", "pairs", "narrow_phase", "manifolds", "solver", "after_solve", "other"})
+        staged += stages.at(name).get<double>();
+      EXPECT_NEAR(staged, stages.at("total").get<double>(), 1e-9) << record.dump();
+      EXPECT_LE(stages.at("solver_islands").get<double>(), stages.at("solver").get<double>()) << record.dump();
+      EXPECT_LE(stages.at("total").get<double>(), record.at("ours_ms").get<double>()) << record.dump();
     });
     ASSERT_FALSE(threads.empty());
     EXPECT_EQ(threads.front(), 1);
