@@ -22,10 +22,11 @@ namespace {
 // outweighs handing it over, few enough that a thousand boxes make several.
 constexpr std::size_t batchManifolds = 128;
 
-bool touchesKinematic(const std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds,
+template <class Traits>
+bool touchesKinematic(const std::vector<Traits>& traits, const std::vector<ContactManifold>& manifolds,
                       const ContactIsland& island) {
   for (std::uint32_t m : island.manifolds)
-    if (bodies[manifolds[m].a].isKinematic() || bodies[manifolds[m].b].isKinematic()) return true;
+    if (traits[manifolds[m].a].kinematic || traits[manifolds[m].b].kinematic) return true;
   return false;
 }
 
@@ -355,7 +356,7 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
   std::vector<char> kinematic(islands.size(), 0);
   forEach(islands.size(), 16, [&](std::size_t i) {
     const ContactIsland island = islands[i];
-    kinematic[i] = touchesKinematic(bodies, manifolds, island);
+    kinematic[i] = touchesKinematic(traits_, manifolds, island);
     const bool calm = !kinematic[i] && (restsAlone(manifolds, island) || restsTogether(manifolds, island));
     substeps[i] = chooseSubsteps(bodies, manifolds, island, loads, g, step, calm);
     if (!settings_.warmStarting) return;
@@ -533,10 +534,9 @@ bool SequentialImpulseSolver::restsTogether(const std::vector<ContactManifold>& 
   constexpr double calmMassSpread = 10.0, calmSettling = 0.25;
   double lightest = std::numeric_limits<double>::infinity(), heaviest = 0.0;
   for (std::uint32_t id : island.bodies) {
-    const SolverBody& body = solverBodies_[id];
     if (!(calmTime_[id] >= calmSettling)) return false;
-    lightest = std::min(lightest, 1.0 / body.inverseMass);
-    heaviest = std::max(heaviest, 1.0 / body.inverseMass);
+    lightest = std::min(lightest, 1.0 / traits_[id].inverseMass);
+    heaviest = std::max(heaviest, 1.0 / traits_[id].inverseMass);
   }
   if (!(heaviest <= calmMassSpread * lightest)) return false;
   for (std::uint32_t m : island.manifolds) {
@@ -679,9 +679,8 @@ double SequentialImpulseSolver::carriedForce(const ContactManifold& manifold) co
 // The middle of a body's three extents: a cube's edge, a plate's width, a
 // rod's thickness. Of the two bodies, the smaller movable one.
 double SequentialImpulseSolver::bodySize(const ContactManifold& manifold) const {
-  const double a = solverBodies_[manifold.a].size, b = solverBodies_[manifold.b].size;
-  return std::min(solverBodies_[manifold.a].inverseMass > 0.0 ? a : b,
-                  solverBodies_[manifold.b].inverseMass > 0.0 ? b : a);
+  const BodyTraits &bodyA = traits_[manifold.a], &bodyB = traits_[manifold.b];
+  return std::min(bodyA.inverseMass > 0.0 ? bodyA.size : bodyB.size, bodyB.inverseMass > 0.0 ? bodyB.size : bodyA.size);
 }
 
 // Impulses carried from the last step were found over its substep (the
@@ -707,6 +706,7 @@ void SequentialImpulseSolver::rescaleWarmStart(std::vector<ContactManifold>& man
 void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                       std::vector<ContactManifold>& manifolds) {
   solverBodies_.resize(bodies.size());
+  traits_.resize(bodies.size());
   motionProperties_.resize(bodies.size());
   listed_.assign(bodies.size(), 0);
   for (const ContactManifold& manifold : manifolds) listed_[manifold.a] = listed_[manifold.b] = 1;
@@ -728,6 +728,7 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
     std::sort(extents.data(), extents.data() + 3);
     body.size = extents[1];
     body.rotation = source.orientation().toRotationMatrix();
+    traits_[id] = {body.inverseMass, body.size, source.isKinematic()};
   });
   // Room for every manifold's constraints; only the batches' single and
   // bouncing manifolds write theirs (sequential_impulse_prepare.cpp).

@@ -53,12 +53,12 @@ std::vector<std::pair<double, double>> SequentialImpulseSolver::supportMassScale
   std::vector<std::pair<double, double>> scales(manifolds.size(), {1.0, 1.0});
   const double limit = settings_.massRatioLimit;
   if (limit <= 0.0 || manifolds.empty()) return scales;
-  const BodyManifolds byBody = manifoldsByBody(manifolds, solverBodies_.size());
-  std::vector<int> level(solverBodies_.size(), unreached);
+  const BodyManifolds byBody = manifoldsByBody(manifolds, traits_.size());
+  std::vector<int> level(traits_.size(), unreached);
   std::vector<std::uint32_t> queue;
   for (const ContactManifold& manifold : manifolds)
     for (std::uint32_t id : {manifold.a, manifold.b})
-      if (solverBodies_[id].inverseMass == 0.0 && level[id] == unreached) {
+      if (traits_[id].inverseMass == 0.0 && level[id] == unreached) {
         level[id] = 0;
         queue.push_back(id);
       }
@@ -79,10 +79,9 @@ std::vector<std::pair<double, double>> SequentialImpulseSolver::supportMassScale
     // through others: a light box a heavy one presses against a wall. The
     // lighter one takes the other's push on to its own supports, so it is
     // the lower one.
-    const bool aIsLower =
-        level[a] != level[b] ? level[a] < level[b] : solverBodies_[a].inverseMass > solverBodies_[b].inverseMass;
-    const double lowerInverse = solverBodies_[aIsLower ? a : b].inverseMass;
-    const double upperInverse = solverBodies_[aIsLower ? b : a].inverseMass;
+    const bool aIsLower = level[a] != level[b] ? level[a] < level[b] : traits_[a].inverseMass > traits_[b].inverseMass;
+    const double lowerInverse = traits_[aIsLower ? a : b].inverseMass;
+    const double upperInverse = traits_[aIsLower ? b : a].inverseMass;
     if (!(lowerInverse > limit * upperInverse)) continue;  // also skips a fixed lower body
     const double scale = limit * upperInverse / lowerInverse;
     (aIsLower ? scales[m].first : scales[m].second) = scale;
