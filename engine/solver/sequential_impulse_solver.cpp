@@ -22,8 +22,7 @@ namespace {
 // outweighs handing it over, few enough that a thousand boxes make several.
 constexpr std::size_t batchManifolds = 128;
 
-template <class Traits>
-bool touchesKinematic(const std::vector<Traits>& traits, const std::vector<ContactManifold>& manifolds,
+bool touchesKinematic(const std::vector<BodyTraits>& traits, const std::vector<ContactManifold>& manifolds,
                       const ContactIsland& island) {
   for (std::uint32_t m : island.manifolds)
     if (traits[manifolds[m].a].kinematic || traits[manifolds[m].b].kinematic) return true;

@@ -210,15 +210,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   std::vector<std::size_t> candidateSlot_;  // per candidate of addCandidates: its manifold, or none
   std::vector<Contact> eventContacts_;  // this step's contacts plus speculative impacts
   std::vector<SolverBody> solverBodies_;
-  // What the step's set-up reads of each body in a manifold, side by side
-  // (from prepare): a SolverBody spans several cache lines, and the set-up
-  // reads one per manifold end and per island body.
-  struct BodyTraits {
-    double inverseMass = 0;  // as solverBodies_: 0 when immovable this step
-    double size = 0;         // as solverBodies_
-    bool kinematic = false;
-  };
-  std::vector<BodyTraits> traits_;
+  std::vector<BodyTraits> traits_;  // per body in a manifold, from prepare
   std::vector<MotionProperties> motionProperties_;  // per body in a manifold, from prepare
   std::vector<char> listed_;                        // per body: in a manifold this step (prepare)
   std::vector<ManifoldTangents> tangents_;      // per manifold

@@ -24,4 +24,13 @@ struct SolverBody {
   bool movable = false;
 };
 
+// What the solver's set-up reads of each body in a manifold, side by side: a
+// SolverBody spans several cache lines, and the set-up (mass scaling, the
+// kinematic and calm checks, body sizes) reads one per manifold end.
+struct BodyTraits {
+  double inverseMass = 0;  // as SolverBody: 0 when immovable this step
+  double size = 0;         // as SolverBody
+  bool kinematic = false;
+};
+
 }  // namespace physdbg
