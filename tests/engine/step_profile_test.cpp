@@ -1,5 +1,6 @@
-// The step's stage times (step_profile.h): they cover the step, the solver's
-// islands are part of the solver, and they never change what the world does.
+// The step's stage times (step_profile.h): every stage is timed, the stages
+// nest in the step, the solver's islands in the solver, and timing never
+// changes what the world does. No assertion depends on how fast anything ran.
 #include "engine/step_profile.h"
 
 #include <gtest/gtest.h>
@@ -40,15 +41,19 @@ TEST(StepProfile, StagesCoverTheStepAndTheSolverHoldsItsIslands) {
     EXPECT_LE(profile.solverIslands, profile.solver);
     sum += profile;
   }
-  EXPECT_GT(sum.solver, 0.0);
-  EXPECT_GT(sum.solverIslands, 0.0);  // the column rests on the floor: islands to solve
-  EXPECT_GT(sum.narrowPhase, 0.0);
-  EXPECT_LE(sum.total, outside);
-  // The stages hold the step: only a few statements between them go untimed.
-  const double staged = sum.total - profileStages(sum)[8].seconds;
-  EXPECT_STREQ(profileStages(sum)[8].name, "other");
-  EXPECT_GT(staged, 0.5 * sum.total);
+  // Every stage does work in this pile, so each was timed: a stage left
+  // untimed stays exactly 0. (Only that time passed is asserted: the
+  // intervals below nest, whatever the machine's speed.)
+  for (const ProfileStage& stage : profileStages(sum)) {
+    if (std::string_view(stage.name) == "other") continue;
+    EXPECT_GT(stage.seconds, 0.0) << stage.name;
+  }
+  // The stages are disjoint intervals inside the step's, and the step's lies
+  // inside the caller's.
+  const double staged = sum.forces + sum.broadPhase + sum.pairs + sum.narrowPhase + sum.manifolds + sum.solver +
+                        sum.afterSolve;
   EXPECT_LE(staged, sum.total);
+  EXPECT_LE(sum.total, outside);
 }
 
 TEST(StepProfile, TimingChangesNoResult) {
