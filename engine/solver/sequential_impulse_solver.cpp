@@ -798,7 +798,7 @@ void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& ma
 
 void SequentialImpulseSolver::warmStart(std::vector<ContactManifold>& manifolds, IslandWork& work) {
   runColours(
-      work, [this](WideManifolds& group) { warmStartWide(group, solverBodies_); },
+      work, [this](std::span<WideManifolds> groups) { warmStartWide(groups, solverBodies_); },
       [&](std::uint32_t m) { warmStartManifold(manifolds[m], m); });
 }
 
@@ -952,7 +952,7 @@ void SequentialImpulseSolver::solve(std::vector<ContactManifold>& manifolds, Isl
   const SubstepContext& substeps = work.substeps;
   const WideSweep sweep{&substeps, settings_.maxPushSpeed, useBias, reversed};
   runColours(
-      work, [this, &sweep](WideManifolds& group) { solveWide(group, solverBodies_, sweep); },
+      work, [this, &sweep](std::span<WideManifolds> groups) { solveWide(groups, solverBodies_, sweep); },
       [&](std::uint32_t m) {
         ContactManifold& manifold = manifolds[m];
         if (!(approaching_[m] && solveApproachTogether(manifold, m, substeps.h)))

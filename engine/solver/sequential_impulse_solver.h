@@ -28,6 +28,8 @@
 // Each batch builds its own constraint rows once it knows its groups,
 // straight into the lanes (sequential_impulse_prepare.cpp). Nothing depends
 // on how work is split: any thread count gives the same result bit for bit.
+#include <algorithm>
+#include <span>
 #include <vector>
 
 #include "engine/contacts/manifold_builder.h"
@@ -147,13 +149,18 @@ class SequentialImpulseSolver final : public ContactSolver {
   template <class Wide, class Single>
   void runColours(IslandWork& work, const Wide& wide, const Single& single) const {
     // A piece of a colour should outweigh handing it to another thread.
-    constexpr std::size_t grain = 32;
+    // Wide groups go four at a time (solveWide), the bundles fixed by index.
+    constexpr std::size_t grain = 32, bundle = 4;
     for (const ColourWork& colour : work.colours) {
-      forEach(colour.groupCount + colour.scalar.size(), grain, [&](std::size_t i) {
-        if (i < colour.groupCount)
-          wide(work.groups[colour.firstGroup + i]);
-        else
-          single(colour.scalar[i - colour.groupCount]);
+      const std::size_t bundles = (colour.groupCount + bundle - 1) / bundle;
+      forEach(bundles + colour.scalar.size(), grain, [&](std::size_t i) {
+        if (i < bundles) {
+          const std::size_t first = bundle * i;
+          wide(std::span<WideManifolds>(work.groups.data() + colour.firstGroup + first,
+                                        std::min(bundle, colour.groupCount - first)));
+        } else {
+          single(colour.scalar[i - bundles]);
+        }
       });
     }
     for (std::uint32_t m : work.overflow) single(m);

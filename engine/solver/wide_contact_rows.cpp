@@ -86,14 +86,15 @@ template <bool locks>
 }
 
 template <bool locks>
-void applyNormal(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, WidePoint& point, Lanes impulse) {
+[[gnu::always_inline]] inline void applyNormal(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group,
+                                               WidePoint& point, Lanes impulse) {
   applyRow<locks>(a, b, group, point, 0, impulse);
   point.stepNormalImpulse += impulse;
 }
 
 template <bool locks>
-void solveNormal(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, WidePoint& point,
-                 const WideSweep& sweep) {
+[[gnu::always_inline]] inline void solveNormal(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group,
+                                               WidePoint& point, const WideSweep& sweep) {
   const Softness& softness = sweep.substeps->softness;
   const Lanes zero = Lanes::zero(), one = Lanes::all(1.0);
   const Lanes apart = simd::greater(point.gap, zero);
@@ -114,7 +115,8 @@ void solveNormal(LaneVelocities& a, LaneVelocities& b, const WideManifolds& grou
 }
 
 template <bool locks>
-void solveFriction(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, WidePoint& point) {
+[[gnu::always_inline]] inline void solveFriction(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group,
+                                                 WidePoint& point) {
   Lanes tangent[2];
   for (int t = 0; t < 2; ++t)
     tangent[t] = point.tangentImpulse[t] - point.tangentMass[t] * rowVelocity(a, b, group, point, t + 1);
@@ -137,45 +139,113 @@ void solveFriction(LaneVelocities& a, LaneVelocities& b, const WideManifolds& gr
 
 namespace {
 
-template <bool locks>
-void warmStartGroup(WideManifolds& group, std::vector<SolverBody>& bodies) {
-  LaneVelocities a = gather(group.bodyA, bodies), b = gather(group.bodyB, bodies);
-  for (int p = 0; p < group.pointSlots; ++p) {
-    WidePoint& point = group.points[p];
-    applyNormal<locks>(a, b, group, point, point.normalImpulse);
-    applyRow<locks>(a, b, group, point, 1, point.tangentImpulse[0]);
-    applyRow<locks>(a, b, group, point, 2, point.tangentImpulse[1]);
+// Gauss-Seidel hands each row's impulse to the next through the bodies'
+// velocities, so one group's rows form a single chain of dependent
+// arithmetic. Groups of one colour share no movable body: `count` of them are
+// solved point by point side by side, each exactly as it would be alone, so
+// their chains overlap. All of them must use the same point slots.
+template <bool locks, int count>
+void warmStartGroups(WideManifolds* const* groups, std::vector<SolverBody>& bodies) {
+  LaneVelocities a[count], b[count];
+  for (int g = 0; g < count; ++g) {
+    a[g] = gather(groups[g]->bodyA, bodies);
+    b[g] = gather(groups[g]->bodyB, bodies);
   }
-  scatter(a, group.bodyA, group.writableA, bodies);
-  scatter(b, group.bodyB, group.writableB, bodies);
+  for (int p = 0; p < groups[0]->pointSlots; ++p)
+    for (int g = 0; g < count; ++g) {
+      WidePoint& point = groups[g]->points[p];
+      applyNormal<locks>(a[g], b[g], *groups[g], point, point.normalImpulse);
+      applyRow<locks>(a[g], b[g], *groups[g], point, 1, point.tangentImpulse[0]);
+      applyRow<locks>(a[g], b[g], *groups[g], point, 2, point.tangentImpulse[1]);
+    }
+  for (int g = 0; g < count; ++g) {
+    scatter(a[g], groups[g]->bodyA, groups[g]->writableA, bodies);
+    scatter(b[g], groups[g]->bodyB, groups[g]->writableB, bodies);
+  }
 }
 
-template <bool locks>
-void solveGroup(WideManifolds& group, std::vector<SolverBody>& bodies, const WideSweep& sweep) {
-  LaneVelocities a = gather(group.bodyA, bodies), b = gather(group.bodyB, bodies);
-  const int used = group.pointSlots;
-  for (int visit = 0; visit < used; ++visit)
-    solveNormal<locks>(a, b, group, group.points[sweep.reversed ? used - 1 - visit : visit], sweep);
-  for (int visit = 0; visit < used; ++visit)
-    solveFriction<locks>(a, b, group, group.points[sweep.reversed ? used - 1 - visit : visit]);
-  scatter(a, group.bodyA, group.writableA, bodies);
-  scatter(b, group.bodyB, group.writableB, bodies);
+template <bool locks, int count>
+void solveGroups(WideManifolds* const* groups, std::vector<SolverBody>& bodies, const WideSweep& sweep) {
+  LaneVelocities a[count], b[count];
+  for (int g = 0; g < count; ++g) {
+    a[g] = gather(groups[g]->bodyA, bodies);
+    b[g] = gather(groups[g]->bodyB, bodies);
+  }
+  const int used = groups[0]->pointSlots;
+  for (int visit = 0; visit < used; ++visit) {
+    const int p = sweep.reversed ? used - 1 - visit : visit;
+    for (int g = 0; g < count; ++g) solveNormal<locks>(a[g], b[g], *groups[g], groups[g]->points[p], sweep);
+  }
+  for (int visit = 0; visit < used; ++visit) {
+    const int p = sweep.reversed ? used - 1 - visit : visit;
+    for (int g = 0; g < count; ++g) solveFriction<locks>(a[g], b[g], *groups[g], groups[g]->points[p]);
+  }
+  for (int g = 0; g < count; ++g) {
+    scatter(a[g], groups[g]->bodyA, groups[g]->writableA, bodies);
+    scatter(b[g], groups[g]->bodyB, groups[g]->writableB, bodies);
+  }
 }
+
+template <template <bool, int> class Solve, int count, class... Arguments>
+void runTogether(std::span<WideManifolds> groups, Arguments&... arguments) {
+  WideManifolds* together[count];
+  bool locks = false;
+  for (int g = 0; g < count; ++g) {
+    together[g] = &groups[g];
+    locks = locks || groups[g].linearLocks;
+  }
+  // A group with locked axes makes all take the masks: multiplying by a mask
+  // of 1 changes no bit, so the others' numbers are the same.
+  if (locks)
+    Solve<true, count>::run(together, arguments...);
+  else
+    Solve<false, count>::run(together, arguments...);
+}
+
+// Runs Solve over the groups, up to four side by side where their point
+// slots match (measured on a 1000-box drop: one at a time 0.86 ms of
+// islands per step, two 0.82, four 0.80).
+template <template <bool, int> class Solve, class... Arguments>
+void sideBySide(std::span<WideManifolds> groups, Arguments&... arguments) {
+  for (std::size_t i = 0; i < groups.size();) {
+    std::size_t same = 1;
+    while (same < 4 && i + same < groups.size() && groups[i + same].pointSlots == groups[i].pointSlots) ++same;
+    const std::span<WideManifolds> rest = groups.subspan(i);
+    if (same == 4) {
+      runTogether<Solve, 4>(rest, arguments...);
+      i += 4;
+    } else if (same >= 2) {
+      runTogether<Solve, 2>(rest, arguments...);
+      i += 2;
+    } else {
+      runTogether<Solve, 1>(rest, arguments...);
+      i += 1;
+    }
+  }
+}
+
+template <bool locks, int count>
+struct WarmStart {
+  static void run(WideManifolds* const* groups, std::vector<SolverBody>& bodies) {
+    warmStartGroups<locks, count>(groups, bodies);
+  }
+};
+
+template <bool locks, int count>
+struct Sweep {
+  static void run(WideManifolds* const* groups, std::vector<SolverBody>& bodies, const WideSweep& sweep) {
+    solveGroups<locks, count>(groups, bodies, sweep);
+  }
+};
 
 }  // namespace
 
-void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies) {
-  if (group.linearLocks)
-    warmStartGroup<true>(group, bodies);
-  else
-    warmStartGroup<false>(group, bodies);
+void warmStartWide(std::span<WideManifolds> groups, std::vector<SolverBody>& bodies) {
+  sideBySide<WarmStart>(groups, bodies);
 }
 
-void solveWide(WideManifolds& group, std::vector<SolverBody>& bodies, const WideSweep& sweep) {
-  if (group.linearLocks)
-    solveGroup<true>(group, bodies, sweep);
-  else
-    solveGroup<false>(group, bodies, sweep);
+void solveWide(std::span<WideManifolds> groups, std::vector<SolverBody>& bodies, const WideSweep& sweep) {
+  sideBySide<Sweep>(groups, bodies, sweep);
 }
 
 void storeWideImpulses(const WideManifolds& group, std::vector<ContactManifold>& manifolds,

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <memory>
 #include <new>
+#include <span>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -93,8 +94,9 @@ unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::
 // into points[p].gap; 0 where a lane has no such point.
 void measureWideGaps(WideManifolds& group, const std::vector<SolverBody>& bodies);
 
-// Applies the impulses the group starts the substep with.
-void warmStartWide(WideManifolds& group, std::vector<SolverBody>& bodies);
+// Applies the impulses the groups start the substep with. `groups` are
+// groups of one colour: they share no movable body.
+void warmStartWide(std::span<WideManifolds> groups, std::vector<SolverBody>& bodies);
 
 struct WideSweep {
   const SubstepContext* substeps = nullptr;
@@ -102,8 +104,11 @@ struct WideSweep {
   bool useBias = true;  // the soft push-out of overlap (off in the relax sweep)
   bool reversed = false;
 };
-// One sweep: every point's normal row, then its friction.
-void solveWide(WideManifolds& group, std::vector<SolverBody>& bodies, const WideSweep& sweep);
+// One sweep over groups of one colour: in each group every point's normal
+// row, then its friction. Each group's numbers are those it would have
+// solved alone (up to four are interleaved to overlap their dependency
+// chains).
+void solveWide(std::span<WideManifolds> groups, std::vector<SolverBody>& bodies, const WideSweep& sweep);
 
 // Impulses back to the manifolds, and each point's largest one to the
 // constraints of the manifolds that keep theirs (`kept`, per manifold).

@@ -2,11 +2,13 @@
 // SIMD lanes; each lane must hold, bit for bit, what buildPointConstraints
 // (point_constraint.h) gives for its manifold, and slots a manifold lacks
 // must hold zeros. Random frames: turned inertia, locked axes, moving
-// bodies, touching and speculative points, bouncing and resting.
+// bodies, touching and speculative points, bouncing and resting. Groups of
+// one colour solved side by side must give what each gives alone.
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "engine/solver/point_constraint.h"
@@ -184,6 +186,71 @@ TEST(WideConstraintBuild, LaneGapsMatchTheScalarGapsBitForBit) {
       for (int p = 0; p < group.pointSlots; ++p)
         expectSame(p < manifold.pointCount ? gaps[p] : 0.0, group.points[p].gap, lane, "gap", p);
     }
+    if (HasFailure()) FAIL() << "trial " << trial;
+  }
+}
+
+// solveWide and warmStartWide interleave up to four groups of one colour
+// (they share no movable body); each must end exactly as it would alone.
+// Seven groups make a bundle of four, then of two, then one alone; groups
+// with one point slot among groups with four break bundles; one group has a
+// locked axis, so its bundle takes the masks; some bodies do not move.
+TEST(WideContactRows, GroupsSolvedSideBySideEndAsTheyWouldAlone) {
+  std::mt19937 random(29);
+  const ConstraintSettings settings{0.005, 0.02, 0.2};
+  const StepContext step;
+  const SubstepContext substeps = substepContext(step, 4, 60.0, 5.0);
+  constexpr int groupCount = 7;
+  for (int trial = 0; trial < 20; ++trial) {
+    Case input = randomCase(random, groupCount * simd::width);
+    const int onePoint = trial % groupCount, locked = (trial + 3) % groupCount;
+    for (std::size_t m = 0; m < input.manifolds.size(); ++m)
+      if (static_cast<int>(m) / simd::width == onePoint) input.manifolds[m].pointCount = 1;
+    for (std::size_t id = 0; id < input.bodies.size(); ++id) {
+      SolverBody& body = input.bodies[id];
+      body.motion.linearVelocity = randomVector(random, 2.0);
+      body.motion.angularVelocity = randomVector(random, 2.0);
+      body.movable = id % 5 != 3;
+      const int group = static_cast<int>(id / 2) / simd::width;
+      if (group == locked && id % 2 == 0) body.linearMask = Vec3(1.0, 0.0, 1.0);
+    }
+    WideGroups groups(groupCount);
+    for (int g = 0; g < groupCount; ++g) {
+      const int count = g == groupCount - 1 ? std::max(1, simd::width - 1) : simd::width;
+      std::vector<std::uint32_t> members(count);
+      for (int lane = 0; lane < count; ++lane) members[lane] = static_cast<std::uint32_t>(g * simd::width + lane);
+      buildWideManifolds(members.data(), count, input.manifolds, input.frames.data() + g * simd::width,
+                         input.bodies, settings, groups[g]);
+      for (int p = 0; p < groups[g].pointSlots; ++p) groups[g].points[p].gap = Lanes::all(0.01 * (p - 1));
+    }
+    WideGroups alone = groups;
+    std::vector<SolverBody> bodiesAlone = input.bodies;
+    const auto sweep = [&](std::span<WideManifolds> these, std::vector<SolverBody>& bodies, bool reversed) {
+      warmStartWide(these, bodies);
+      solveWide(these, bodies, WideSweep{&substeps, 3.0, true, reversed});
+      solveWide(these, bodies, WideSweep{&substeps, 3.0, false, !reversed});
+    };
+    for (int pass = 0; pass < 2; ++pass) {
+      sweep(std::span<WideManifolds>(groups.data(), groups.size()), input.bodies, pass == 1);
+      for (WideManifolds& group : alone) sweep(std::span<WideManifolds>(&group, 1), bodiesAlone, pass == 1);
+    }
+    for (std::size_t id = 0; id < input.bodies.size(); ++id) {
+      const BodyMotion &together = input.bodies[id].motion, &single = bodiesAlone[id].motion;
+      for (int axis = 0; axis < 3; ++axis) {
+        EXPECT_EQ(0, std::memcmp(&together.linearVelocity[axis], &single.linearVelocity[axis], sizeof(double)))
+            << "body " << id << ", axis " << axis;
+        EXPECT_EQ(0, std::memcmp(&together.angularVelocity[axis], &single.angularVelocity[axis], sizeof(double)))
+            << "body " << id << ", axis " << axis;
+      }
+    }
+    for (int g = 0; g < groupCount; ++g)
+      for (int p = 0; p < groups[g].pointSlots; ++p)
+        for (int lane = 0; lane < simd::width; ++lane) {
+          const WidePoint &together = groups[g].points[p], &single = alone[g].points[p];
+          expectSame(simd::getLane(single.normalImpulse, lane), together.normalImpulse, lane, "normalImpulse", p);
+          expectSame(simd::getLane(single.tangentImpulse[0], lane), together.tangentImpulse[0], lane, "tangent", p);
+          expectSame(simd::getLane(single.tangentImpulse[1], lane), together.tangentImpulse[1], lane, "tangent", p);
+        }
     if (HasFailure()) FAIL() << "trial " << trial;
   }
 }
