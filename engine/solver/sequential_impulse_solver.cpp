@@ -456,6 +456,7 @@ void SequentialImpulseSolver::runBatch(std::vector<RigidBody>& bodies, const std
                                        std::vector<ContactManifold>& manifolds, IslandWork& work) {
   const std::vector<std::uint32_t> kinematic =
       work.touchesKinematic ? kinematicNeighbours(bodies, manifolds, work.island()) : std::vector<std::uint32_t>{};
+  const WideGroupPool::Loan groups(groupPool_, work.groups);
   planIsland(bodies, manifolds, movable, work);
   solveIsland(bodies, manifolds, work, kinematic);
   for (std::uint32_t id : work.bodies) lastSubstep_[id] = work.substeps.h;

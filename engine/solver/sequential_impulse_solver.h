@@ -39,6 +39,7 @@
 #include "engine/solver/point_constraint.h"
 #include "engine/solver/solver_body.h"
 #include "engine/solver/wide_contact_rows.h"
+#include "engine/solver/wide_group_pool.h"
 
 namespace physdbg {
 
@@ -87,8 +88,8 @@ class SequentialImpulseSolver final : public ContactSolver {
     std::size_t firstGroup = 0, groupCount = 0;  // in IslandWork::groups
     std::vector<std::uint32_t> scalar;
   };
-  // Kept from step to step (batches_), so each batch's lists and groups
-  // reuse their storage: a batch's groups are tens of kilobytes.
+  // Kept from step to step (batches_), so each batch's lists reuse their
+  // storage. Its groups are borrowed from groupPool_ while it runs.
   struct IslandWork {
     std::vector<std::uint32_t> manifolds, bodies;  // its islands' together, ascending
     ContactIsland island() const { return {manifolds, bodies}; }
@@ -233,6 +234,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   ContactIslands islands_;                             // this step's, from solveManifolds
   std::vector<IslandWork> batches_;                    // [0, batchCount_) this step's
   std::size_t batchCount_ = 0;
+  WideGroupPool groupPool_;
   const TaskSystem* tasks_ = nullptr;  // this step's threads (StepContext::tasks)
 };
 
