@@ -216,7 +216,7 @@ int SequentialImpulseSolver::addCandidate(const Contact& contact, const RigidBod
 
 SolverStepReport SequentialImpulseSolver::solve(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                                 const std::vector<Contact>&, const StepContext& step) {
-  if (settings_.warmStarting) warmStartFromPreviousStep();
+  if (settings_.warmStarting) warmStartFromPreviousStep(step);
   SolverStepReport report = solveManifolds(bodies, movable, manifolds_, step);
   report.responses = static_cast<int>(manifolds_.size());
   return report;
@@ -273,18 +273,30 @@ void carryImpulses(const ContactManifold& old, ContactManifold& manifold, double
 // edge to edge, a sway of a micrometre moves a corner across the other face's
 // side and the clip makes a new point in the same place. Losing its impulse
 // would drop the load it held for a step and kick the stack.
-void SequentialImpulseSolver::warmStartFromPreviousStep() {
-  std::size_t previous = 0;
-  for (ContactManifold& manifold : manifolds_) {
-    const BodyPair pair{manifold.a, manifold.b};
-    while (previous < previousManifolds_.size() &&
-           BodyPair{previousManifolds_[previous].a, previousManifolds_[previous].b} < pair)
-      ++previous;
-    if (previous == previousManifolds_.size()) break;
-    const ContactManifold& old = previousManifolds_[previous];
-    if (BodyPair{old.a, old.b} != pair) continue;
-    carryImpulses(old, manifold, settings_.linearSlop);
-  }
+//
+// Both lists are in pair order, so a range of manifolds walks the old list
+// from the first old manifold not before its own first pair: ranges run in
+// parallel, and each manifold meets the same old one for any split.
+void SequentialImpulseSolver::warmStartFromPreviousStep(const StepContext& step) {
+  const auto pairOf = [](const ContactManifold& manifold) { return BodyPair{manifold.a, manifold.b}; };
+  const auto carryRange = [&](std::size_t begin, std::size_t end) {
+    auto old = std::lower_bound(
+        previousManifolds_.begin(), previousManifolds_.end(), pairOf(manifolds_[begin]),
+        [&pairOf](const ContactManifold& manifold, const BodyPair& pair) { return pairOf(manifold) < pair; });
+    for (std::size_t m = begin; m < end; ++m) {
+      ContactManifold& manifold = manifolds_[m];
+      const BodyPair pair = pairOf(manifold);
+      while (old != previousManifolds_.end() && pairOf(*old) < pair) ++old;
+      if (old == previousManifolds_.end()) return;
+      if (pairOf(*old) == pair) carryImpulses(*old, manifold, settings_.linearSlop);
+    }
+  };
+  constexpr std::size_t grain = 1024;  // a carry is a few cache lines
+  if (manifolds_.empty()) return;
+  if (step.tasks)
+    step.tasks->parallelFor(manifolds_.size(), grain, carryRange);
+  else
+    carryRange(0, manifolds_.size());
 }
 
 namespace {

@@ -210,7 +210,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   void applyNormal(const ContactManifold& manifold, const PointConstraint& constraint, ManifoldPoint& point,
                    double impulse);
 
-  void warmStartFromPreviousStep();
+  void warmStartFromPreviousStep(const StepContext& step);
 
   SolverSettings settings_;
   std::vector<ContactManifold> manifolds_, previousManifolds_;
