@@ -105,7 +105,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   // The two ways an island is calm (SolverSettings::calmSubsteps).
   bool restsAlone(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
   bool restsTogether(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
-  void updateCalmTimes(std::size_t bodyCount, double dt);
+  void updateCalmTime(std::size_t id, double dt);
   // calm: the island starts from SolverSettings::calmSubsteps.
   SubstepContext chooseSubsteps(const std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds,
                                 const ContactIsland& island, const std::vector<double>& loads, double gravity,
@@ -167,7 +167,7 @@ class SequentialImpulseSolver final : public ContactSolver {
     for (std::uint32_t m : work.overflow) single(m);
   }
   void prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-               std::vector<ContactManifold>& manifolds);
+               std::vector<ContactManifold>& manifolds, double dt);
   // Per manifold, the factors on a's and b's inverse mass and inertia: 1,
   // except where a heavy body rests on a much lighter one (massRatioLimit).
   std::vector<std::pair<double, double>> supportMassScales(const std::vector<ContactManifold>& manifolds) const;
