@@ -644,13 +644,12 @@ double SequentialImpulseSolver::manifoldDemand(const std::vector<RigidBody>& bod
   if (!(force > 0.0)) return 0.0;
   const double allowed = allowedOverlap(settings_, bodySize(manifold));
   if (bound) {
-    const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
+    const BodyTraits &a = traits_[manifold.a], &b = traits_[manifold.b];
     const auto [scaleA, scaleB] = massScales_[m];
     double armA = 0.0, armB = 0.0;
     for (int p = 0; p < manifold.pointCount; ++p) {
       Vec3 pointArmA, pointArmB;
-      pointArms(manifold, p, bodies[manifold.a].position(), bodies[manifold.b].position(), settings_.linearSlop,
-                pointArmA, pointArmB);
+      pointArms(manifold, p, a.position, b.position, settings_.linearSlop, pointArmA, pointArmB);
       armA = std::max(armA, pointArmA.squaredNorm());
       armB = std::max(armB, pointArmB.squaredNorm());
     }
@@ -674,7 +673,7 @@ double SequentialImpulseSolver::manifoldDemand(const std::vector<RigidBody>& bod
 double SequentialImpulseSolver::carriedForce(const ContactManifold& manifold) const {
   double previous = 0.0, impulse = 0.0;
   for (std::uint32_t id : {manifold.a, manifold.b})
-    if (solverBodies_[id].movable) previous = std::max(previous, lastSubstep_[id]);
+    if (traits_[id].movable) previous = std::max(previous, lastSubstep_[id]);
   for (int p = 0; p < manifold.pointCount; ++p) impulse += manifold.points[p].normalImpulse;
   return previous > 0.0 ? impulse / previous : 0.0;
 }
@@ -739,7 +738,8 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
     std::sort(extents.data(), extents.data() + 3);
     body.size = extents[1];
     body.rotation = source.orientation().toRotationMatrix();
-    traits_[id] = {body.inverseMass, body.size, source.isKinematic()};
+    traits_[id] = {body.motion.position, body.inverseMass, body.inverseInertiaBound, body.size,
+                   source.isKinematic(), body.movable};
     updateCalmTime(id, dt);
   });
   // Room for every manifold's constraints; only the batches' single and

@@ -25,12 +25,16 @@ struct SolverBody {
 };
 
 // What the solver's set-up reads of each body in a manifold, side by side: a
-// SolverBody spans several cache lines, and the set-up (mass scaling, the
-// kinematic and calm checks, body sizes) reads one per manifold end.
+// SolverBody spans six cache lines and a RigidBody nine, and the set-up (mass
+// scaling, the kinematic and calm checks, body sizes, each island's loaded
+// frequency bound) reads one per manifold end. One line a body.
 struct BodyTraits {
-  double inverseMass = 0;  // as SolverBody: 0 when immovable this step
-  double size = 0;         // as SolverBody
+  Vec3 position = Vec3::Zero();    // at the start of the step
+  double inverseMass = 0;          // as SolverBody: 0 when immovable this step
+  double inverseInertiaBound = 0;  // as SolverBody
+  double size = 0;                 // as SolverBody
   bool kinematic = false;
+  bool movable = false;  // as SolverBody
 };
 
 }  // namespace physdbg
