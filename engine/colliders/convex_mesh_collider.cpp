@@ -109,19 +109,33 @@ int ConvexMeshCollider::supportIndex(const Vec3& direction, int hint) const {
   if (count <= kBruteForceVertexCount || !(length <= DBL_MAX)) return scan(direction);
   const double band = bandScale_ * length;
   // Zero, tiny and huge directions climb from the hint or vertex 0: the
-  // settled cells' margins assume p . d neither under- nor overflows.
+  // cell lists. margins assume p . d neither under- nor overflows.
   if (!(band >= kLeastTrustedBand && band <= kGreatestTrustedBand)) {
     return climb(direction, hint >= 0 && hint < count ? hint : 0, band);
   }
   const SupportCubeMap::Entry entry = startMap_.lookup(direction);
-  if (entry.settled) return entry.vertex;
+  if (entry.count > 0) return bestListed(direction, entry);
   // Otherwise start from the better of the hint and the answer at the
   // centre of the direction's cell, which is usually one step away.
-  int start = entry.vertex;
+  int start = entry.vertices[0];
   if (hint >= 0 && hint < count && hint != start && along(v[hint], direction) > along(v[start], direction)) {
     start = hint;
   }
   return climb(direction, start, band);
+}
+
+// The listed vertices are ascending, so a strict comparison keeps the
+// lowest index of several tied ones, as the scan does.
+int ConvexMeshCollider::bestListed(const Vec3& direction, const SupportCubeMap::Entry& entry) const {
+  const auto& v = hull_.vertices;
+  int best = entry.vertices[0];
+  double top = along(v[best], direction);
+  for (int i = 1; i < entry.count; ++i) {
+    const int vertex = entry.vertices[i];
+    const double value = along(v[vertex], direction);
+    if (value > top) top = value, best = vertex;
+  }
+  return best;
 }
 
 // Steepest ascent to a vertex no neighbour beats. Rounding can leave a tied

@@ -1,11 +1,11 @@
 #pragma once
-// Convex mesh from a point cloud. The hull is built once; support queries
-// hill-climb over hull-vertex adjacency (a linear function on a convex
-// polytope has no local maximum that is not global), starting from the better
-// of the caller's warm-start hint and a precomputed answer for a nearby
-// direction (support_cube_map.h, which also answers outright for directions
-// well inside one vertex's normal cone). Small hulls are scanned by brute
-// force, which is faster than climbing.
+// Convex mesh from a point cloud. The hull is built once; a support query
+// takes the best of the few vertices its direction's cube-map cell lists
+// (support_cube_map.h). Where a cell has no complete list, it hill-climbs
+// over hull-vertex adjacency (a linear function on a convex polytope has no
+// local maximum that is not global), starting from the better of the
+// caller's warm-start hint and the support of the cell's centre. Small hulls
+// are scanned by brute force, which is faster than either.
 //
 // The answer is the linear scan's, bit for bit, whatever the hints: the
 // lowest-numbered vertex of largest p . d. Where the climb stops, neighbours
@@ -53,6 +53,7 @@ class ConvexMeshCollider final : public Collider {
 
  private:
   int scan(const Vec3& direction) const;
+  int bestListed(const Vec3& direction, const SupportCubeMap::Entry& entry) const;
   int climb(const Vec3& direction, int start, double band) const;
   int settlePlateau(const Vec3& direction, int top, double floor) const;
 

@@ -1,6 +1,7 @@
 #include "engine/colliders/support_cube_map.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace physdbg {
@@ -13,10 +14,11 @@ constexpr double kCellsPerVertex = 24.0;
 // coordinates, which span 2), far more than the rounding of the division
 // that sorts a direction into a cell (a few ulps of 1).
 constexpr double kCellSlack = 1e-9;
-// A settled cell's vertex beats each neighbour by this many climb bands at
-// the cell's corners: one for the climb's own test, the rest for rounding of
-// the check here and of p . d at lookup (each well under a tenth of a band).
-constexpr double kSettledBands = 3.0;
+// A vertex left off a cell's list is beaten by a listed one by this many
+// rounding bands at the cell's corners: one for the rounding of p . d at
+// lookup, the rest for the rounding of the check here (each well under a
+// tenth of a band), with room to spare.
+constexpr double kListBands = 3.0;
 
 }  // namespace
 
@@ -24,15 +26,29 @@ SupportCubeMap::SupportCubeMap(int vertexCount) {
   const double wanted = std::sqrt(kCellsPerVertex * vertexCount / 6.0);
   cellsPerEdge_ = std::clamp(static_cast<int>(std::ceil(wanted)), kMinCellsPerEdge, kMaxCellsPerEdge);
   halfCells_ = 0.5 * cellsPerEdge_;
-  entries_.assign(6 * cellsPerEdge_ * cellsPerEdge_, 0);
+  cells_.assign(6 * cellsPerEdge_ * cellsPerEdge_, 0);
 }
 
 void SupportCubeMap::assign(const ConvexHull& hull, int cell, int vertex, double bandScale) {
-  entries_[cell] = coneInsideNormalCone(hull, cell, vertex, bandScale) ? ~vertex : vertex;
+  std::array<int, kMaxCandidates> list;
+  const int count = candidatesOf(hull, cell, vertex, bandScale, list);
+  const int size = std::max(count, 1);
+  if (count == 0) list[0] = vertex;
+  // Neighbouring cells often have the same list: store it once.
+  if (cell > 0) {
+    const std::uint32_t previous = cells_[cell - 1];
+    const auto first = candidates_.begin() + (previous >> kCountBits);
+    if (static_cast<int>(previous & kCountMask) == count && std::equal(list.begin(), list.begin() + size, first)) {
+      cells_[cell] = previous;
+      return;
+    }
+  }
+  cells_[cell] = static_cast<std::uint32_t>(candidates_.size()) << kCountBits | static_cast<std::uint32_t>(count);
+  candidates_.insert(candidates_.end(), list.begin(), list.begin() + size);
 }
 
-int SupportCubeMap::settledCells() const {
-  return static_cast<int>(std::count_if(entries_.begin(), entries_.end(), [](int e) { return e < 0; }));
+int SupportCubeMap::answeredCells() const {
+  return static_cast<int>(std::count_if(cells_.begin(), cells_.end(), [](std::uint32_t c) { return (c & kCountMask) > 0; }));
 }
 
 Vec3 SupportCubeMap::cellDirection(int cell, double u, double v) const {
@@ -49,20 +65,38 @@ Vec3 SupportCubeMap::cellDirection(int cell, double u, double v) const {
 // The cell's directions are the positive combinations of its four corner
 // rays, and p . d is linear in d, so a margin that holds at the corners holds
 // across the cell (scaled by |d|_1, which is at most the combination of the
-// corners' |c|_1, and the band grows with it).
-bool SupportCubeMap::coneInsideNormalCone(const ConvexHull& hull, int cell, int vertex, double bandScale) const {
+// corners' |c|_1, and the band grows with it). Every neighbour of a listed
+// vertex is either listed or beaten that way by one listed vertex.
+int SupportCubeMap::candidatesOf(const ConvexHull& hull, int cell, int vertex, double bandScale,
+                                 std::array<int, kMaxCandidates>& listed) const {
   const double slack = kCellSlack * cellsPerEdge_ / 2.0;  // in cell units
-  const Vec3& top = hull.vertices[vertex];
-  for (const double u : {-slack, 1.0 + slack}) {
-    for (const double v : {-slack, 1.0 + slack}) {
-      const Vec3 corner = cellDirection(cell, u, v);
-      const double margin = kSettledBands * bandScale * corner.lpNorm<1>();
-      for (int k = hull.neighbourStart[vertex]; k < hull.neighbourStart[vertex + 1]; ++k) {
-        if (!(corner.dot(hull.neighbourPoints[k] - top) < -margin)) return false;
-      }
+  std::array<Vec3, 4> corners;
+  std::array<double, 4> margins;
+  for (int c = 0; c < 4; ++c) {
+    corners[c] = cellDirection(cell, c & 1 ? 1.0 + slack : -slack, c & 2 ? 1.0 + slack : -slack);
+    margins[c] = kListBands * bandScale * corners[c].lpNorm<1>();
+  }
+  const auto beats = [&](int top, int other) {
+    for (int c = 0; c < 4; ++c) {
+      if (!(corners[c].dot(hull.vertices[other] - hull.vertices[top]) < -margins[c])) return false;
+    }
+    return true;
+  };
+  listed[0] = vertex;
+  int count = 1;
+  const auto end = [&] { return listed.begin() + count; };
+  for (int i = 0; i < count; ++i) {  // the list grows while it is walked
+    const int from = listed[i];
+    for (int k = hull.neighbourStart[from]; k < hull.neighbourStart[from + 1]; ++k) {
+      const int neighbour = hull.neighbours[k];
+      if (std::find(listed.begin(), end(), neighbour) != end()) continue;
+      if (std::any_of(listed.begin(), end(), [&](int top) { return beats(top, neighbour); })) continue;
+      if (count == kMaxCandidates) return 0;
+      listed[count++] = neighbour;
     }
   }
-  return true;
+  std::sort(listed.begin(), end());
+  return count;
 }
 
 }  // namespace physdbg

@@ -1,15 +1,19 @@
 #pragma once
-// Where a convex mesh's support climb starts, by direction: a cube map whose
-// cells each hold the support vertex of the direction through the cell's
-// centre. A cell whose whole cone of directions lies strictly inside that
-// vertex's normal cone is "settled": every direction that looks it up has
-// that vertex as its answer, with room for rounding, so the climb is skipped.
+// A convex mesh's support answers by direction: a cube map whose cells each
+// list every vertex that can be the support of a direction in the cell, so a
+// query takes the best of a few listed vertices (usually one to three)
+// instead of climbing the hull. The list is complete, with room for
+// rounding: every vertex next to a listed one but left out is beaten by a
+// single listed vertex by three rounding bands across the whole cell, and on
+// a convex hull the vertices above any level are connected, so nothing
+// further away can win either.
 //
-// Cells are cut finely enough that a typical vertex's normal cone holds
-// whole cells (about 24 cells a vertex, at most 32 x 32 a face), so on a
-// round 256-vertex hull about half the lookups are settled and most of the
-// rest are one climbing step from the answer.
+// A cell whose list would pass kMaxCandidates (a face seen head-on with many
+// corners, or a hull with more vertices than the map has cells) keeps only
+// where to start climbing: the support of its centre.
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "engine/colliders/convex_hull.h"
@@ -18,35 +22,39 @@ namespace physdbg {
 
 class SupportCubeMap {
  public:
-  // The cell's vertex: the answer when settled, else where to start climbing.
+  static constexpr int kMaxCandidates = 7;
+
+  // What a cell says of the directions in it.
   struct Entry {
-    int vertex = 0;
-    bool settled = false;
+    const int* vertices;  // ascending; with count 0, vertices[0] is where to climb from
+    int count;            // 0 when the cell has no complete list
   };
 
   SupportCubeMap() = default;
-  // Sized for the hull; fill every cell with assign() before any lookup.
+  // Sized for the hull; fill every cell with assign(), in cell order, before
+  // any lookup.
   explicit SupportCubeMap(int vertexCount);
 
-  int cellCount() const { return static_cast<int>(entries_.size()); }
+  int cellCount() const { return static_cast<int>(cells_.size()); }
   Vec3 cellCentre(int cell) const { return cellDirection(cell, 0.5, 0.5); }
   // `vertex` is the exact support vertex of cellCentre(cell). `bandScale`
-  // times |d|_1 is the band within which the hull's climb counts a
-  // neighbour's p . d as a tie of the top. The cell is settled only when
-  // every neighbour of the vertex is below it by three bands across the whole
-  // cell, so a climb started there would return the vertex at once.
+  // times |d|_1 bounds the rounding of p . d (see ConvexMeshCollider::climb).
   void assign(const ConvexHull& hull, int cell, int vertex, double bandScale);
 
   // The cell of a finite, non-zero direction. Inline: GJK and EPA wait on
   // every support, so the lookup is on their critical path.
   Entry lookup(const Vec3& direction) const {
-    const int entry = entries_[cellIndex(direction)];
-    return entry < 0 ? Entry{~entry, true} : Entry{entry, false};
+    const std::uint32_t packed = cells_[cellIndex(direction)];
+    return {candidates_.data() + (packed >> kCountBits), static_cast<int>(packed & kCountMask)};
   }
   int cellsPerEdge() const { return cellsPerEdge_; }
-  int settledCells() const;
+  int answeredCells() const;  // cells with a complete list
 
  private:
+  static constexpr int kCountBits = 3;
+  static constexpr std::uint32_t kCountMask = (1u << kCountBits) - 1;
+  static_assert(kMaxCandidates <= static_cast<int>(kCountMask));
+
   // The two axes of a cube face besides its own, in increasing order.
   static int firstOther(int axis) { return axis == 0 ? 1 : 0; }
   static int secondOther(int axis) { return axis == 2 ? 1 : 2; }
@@ -68,11 +76,16 @@ class SupportCubeMap {
            coordinate(direction[secondOther(axis)]);
   }
   Vec3 cellDirection(int cell, double u, double v) const;  // u, v in cell units from its low corner
-  bool coneInsideNormalCone(const ConvexHull& hull, int cell, int vertex, double bandScale) const;
+  // Lists every vertex that can be the support somewhere in the cell,
+  // ascending, and returns how many; 0 when more than kMaxCandidates would
+  // be needed.
+  int candidatesOf(const ConvexHull& hull, int cell, int vertex, double bandScale,
+                   std::array<int, kMaxCandidates>& listed) const;
 
   int cellsPerEdge_ = 0;
   double halfCells_ = 0.0;
-  std::vector<int> entries_;  // vertex, or ~vertex when settled
+  std::vector<std::uint32_t> cells_;  // offset into candidates_ << kCountBits | count
+  std::vector<int> candidates_;       // the cells' lists, a list shared by neighbouring cells stored once
 };
 
 }  // namespace physdbg
