@@ -109,7 +109,7 @@ int ConvexMeshCollider::supportIndex(const Vec3& direction, int hint) const {
   if (count <= kBruteForceVertexCount || !(length <= DBL_MAX)) return scan(direction);
   const double band = bandScale_ * length;
   // Zero, tiny and huge directions climb from the hint or vertex 0: the
-  // cell lists. margins assume p . d neither under- nor overflows.
+  // cell lists' margins assume p . d neither under- nor overflows.
   if (!(band >= kLeastTrustedBand && band <= kGreatestTrustedBand)) {
     return climb(direction, hint >= 0 && hint < count ? hint : 0, band);
   }
