@@ -130,11 +130,15 @@ int ConvexMeshCollider::bestListed(const Vec3& direction, const SupportCubeMap::
   const auto& v = hull_.vertices;
   int best = entry.vertices[0];
   double top = along(v[best], direction);
-  for (int i = 1; i < entry.count; ++i) {
+  const auto weigh = [&](int i) {
     const int vertex = entry.vertices[i];
     const double value = along(v[vertex], direction);
     if (value > top) top = value, best = vertex;
-  }
+  };
+  // The padded entries first, unrolled: how long a list is is a coin toss.
+  static_assert(SupportCubeMap::kPaddedCount == 4);
+  weigh(1), weigh(2), weigh(3);
+  for (int i = SupportCubeMap::kPaddedCount; i < entry.count; ++i) weigh(i);
   return best;
 }
 

@@ -32,8 +32,11 @@ SupportCubeMap::SupportCubeMap(int vertexCount) {
 void SupportCubeMap::assign(const ConvexHull& hull, int cell, int vertex, double bandScale) {
   std::array<int, kMaxCandidates> list;
   const int count = candidatesOf(hull, cell, vertex, bandScale, list);
-  const int size = std::max(count, 1);
   if (count == 0) list[0] = vertex;
+  // Short lists are padded with their last vertex, which changes no answer,
+  // so a lookup weighs kPaddedCount vertices without a branch on the count.
+  const int size = std::max(count, kPaddedCount);
+  std::fill(list.begin() + std::max(count, 1), list.begin() + size, list[std::max(count, 1) - 1]);
   // Neighbouring cells often have the same list: store it once.
   if (cell > 0) {
     const std::uint32_t previous = cells_[cell - 1];

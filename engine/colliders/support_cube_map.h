@@ -11,6 +11,7 @@
 // A cell whose list would pass kMaxCandidates (a face seen head-on with many
 // corners, or a hull with more vertices than the map has cells) keeps only
 // where to start climbing: the support of its centre.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -23,10 +24,14 @@ namespace physdbg {
 class SupportCubeMap {
  public:
   static constexpr int kMaxCandidates = 7;
+  // Every list holds at least this many entries (see Entry).
+  static constexpr int kPaddedCount = 4;
 
   // What a cell says of the directions in it.
   struct Entry {
-    const int* vertices;  // ascending; with count 0, vertices[0] is where to climb from
+    // Ascending; with count 0, vertices[0] is where to climb from. Lists
+    // shorter than kPaddedCount repeat their last vertex up to it.
+    const int* vertices;
     int count;            // 0 when the cell has no complete list
   };
 
@@ -64,8 +69,11 @@ class SupportCubeMap {
   // cellsPerEdge_ rows and columns.
   int cellIndex(const Vec3& direction) const {
     const double x = std::abs(direction.x()), y = std::abs(direction.y()), z = std::abs(direction.z());
-    const int axis = x >= y ? (x >= z ? 0 : 2) : (y >= z ? 1 : 2);
-    const double dominant = axis == 0 ? x : (axis == 1 ? y : z);
+    // Which axis dominates is a coin toss for GJK's directions, so it is
+    // worked out without branches: x wins ties with both, y ties with z.
+    const int xWins = (x >= y) & (x >= z), yWins = (x < y) & (y >= z);
+    const int axis = 2 - 2 * xWins - yWins;
+    const double dominant = std::max(x, std::max(y, z));
     const double scale = halfCells_ / dominant;
     const auto coordinate = [&](double other) {
       const int cell = static_cast<int>((other + dominant) * scale);
