@@ -504,10 +504,9 @@ void World::solveContacts(const StepContext& context) {
 // they still touch, silently.
 std::vector<BodyPair> World::dormantPairs() const {
   std::vector<BodyPair> dormant;
-  for (const BodyPair& pair : events_.touchingPairs()) {
-    if (!takesPart(pair.a) || !takesPart(pair.b) || isMoving(pair.a) || isMoving(pair.b)) continue;
-    if (asleep_[pair.a] || asleep_[pair.b]) dormant.push_back(pair);
-  }
+  const std::vector<Stillness> still = stillness();
+  for (const BodyPair& pair : events_.touchingPairs())
+    if (atRest(still, pair)) dormant.push_back(pair);
   return dormant;
 }
 

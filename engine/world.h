@@ -260,7 +260,15 @@ class World {
   std::vector<ShownContact> initialContacts() const;
   std::vector<BodyPair> overlappingBoxes(double margin) const;
   void keepRestingContacts(bool fellAsleep);
-  bool atRest(const BodyPair& pair) const;
+  // Per body: whether it takes part and is not moving, and whether it sleeps;
+  // a pair is at rest when both are still and one sleeps. Worked out once a
+  // pass: a sleeping world asks it of every resting contact each step.
+  enum class Stillness : char { moving, awake, asleep };
+  std::vector<Stillness> stillness() const;
+  static bool atRest(const std::vector<Stillness>& still, const BodyPair& pair) {
+    const Stillness a = still[pair.a], b = still[pair.b];
+    return a != Stillness::moving && b != Stillness::moving && (a == Stillness::asleep || b == Stillness::asleep);
+  }
   void linkIslands();
   void updateSlowTimes(const StepContext& context);
   bool updateSleep(const StepContext& context);  // true when an island fell asleep

@@ -17,19 +17,24 @@ std::vector<ShownContact> World::shownContacts() const {
   return points;
 }
 
-bool World::atRest(const BodyPair& pair) const {
-  if (!takesPart(pair.a) || !takesPart(pair.b) || isMoving(pair.a) || isMoving(pair.b)) return false;
-  return asleep_[pair.a] || asleep_[pair.b];
+std::vector<World::Stillness> World::stillness() const {
+  std::vector<Stillness> still(bodies_.size());
+  for (BodyId id = 0; id < bodies_.size(); ++id) {
+    if (!takesPart(id) || isMoving(id)) still[id] = Stillness::moving;
+    else still[id] = asleep_[id] ? Stillness::asleep : Stillness::awake;
+  }
+  return still;
 }
 
 // Sleeping proxies make no pairs, so no step recomputes what a sleeping body
 // rests on: its points are taken from the step that put it to sleep and
 // dropped when a body of the pair wakes.
 void World::keepRestingContacts(bool fellAsleep) {
-  std::erase_if(resting_, [this](const ShownContact& point) { return !atRest(point.pair); });
+  const std::vector<Stillness> still = stillness();
+  std::erase_if(resting_, [&](const ShownContact& point) { return !atRest(still, point.pair); });
   if (!fellAsleep) return;
   std::vector<ShownContact> fresh = solver_->touchedPoints(contacts_);
-  std::erase_if(fresh, [this](const ShownContact& point) { return !atRest(point.pair); });
+  std::erase_if(fresh, [&](const ShownContact& point) { return !atRest(still, point.pair); });
   for (ShownContact& point : fresh) point.resting = true;
   resting_ = mergeContacts(std::move(fresh), resting_);
 }
