@@ -504,6 +504,7 @@ void World::solveContacts(const StepContext& context) {
 // they still touch, silently.
 std::vector<BodyPair> World::dormantPairs() const {
   std::vector<BodyPair> dormant;
+  if (std::find(asleep_.begin(), asleep_.end(), true) == asleep_.end()) return dormant;  // an awake world
   const std::vector<Stillness> still = stillness();
   for (const BodyPair& pair : events_.touchingPairs())
     if (atRest(still, pair)) dormant.push_back(pair);

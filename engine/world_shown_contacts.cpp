@@ -30,6 +30,7 @@ std::vector<World::Stillness> World::stillness() const {
 // rests on: its points are taken from the step that put it to sleep and
 // dropped when a body of the pair wakes.
 void World::keepRestingContacts(bool fellAsleep) {
+  if (resting_.empty() && !fellAsleep) return;  // an awake world: nothing to keep
   const std::vector<Stillness> still = stillness();
   std::erase_if(resting_, [&](const ShownContact& point) { return !atRest(still, point.pair); });
   if (!fellAsleep) return;
