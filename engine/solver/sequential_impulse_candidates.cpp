@@ -24,6 +24,10 @@ int SequentialImpulseSolver::addCandidates(const std::vector<Contact>& candidate
   // manifolds are built straight into manifolds_ in parallel (building them
   // aside and appending was a serial copy of every manifold, 600 bytes each).
   const std::size_t first = manifolds_.size();
+  // A whole pass takes the spare manifolds: every slot below is assigned in
+  // full, so what they held does not matter, and only slots past them are
+  // constructed.
+  if (first == 0) std::swap(manifolds_, spareManifolds_);
   candidateSlot_.resize(candidates.size());
   std::size_t kept = first;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -48,6 +52,7 @@ int SequentialImpulseSolver::addCandidates(const std::vector<Contact>& candidate
         continue;
       }
       const Contact& contact = candidates[i];
+      manifold = ContactManifold{};
       manifold.a = contact.a;
       manifold.b = contact.b;
       const RigidBody &a = bodies[contact.a], &b = bodies[contact.b];

@@ -198,10 +198,15 @@ double SequentialImpulseSolver::reachShare(const BodyReach& body, const StepCont
 
 void SequentialImpulseSolver::beginStep(std::vector<RigidBody>&, const std::vector<bool>&, const StepContext&) {
   std::swap(previousManifolds_, manifolds_);
-  manifolds_.clear();
+  retireManifolds();
 }
 
-void SequentialImpulseSolver::clearContacts() { manifolds_.clear(); }
+void SequentialImpulseSolver::clearContacts() { retireManifolds(); }
+
+void SequentialImpulseSolver::retireManifolds() {
+  if (manifolds_.size() > spareManifolds_.size()) std::swap(manifolds_, spareManifolds_);
+  manifolds_.clear();
+}
 
 int SequentialImpulseSolver::addCandidate(const Contact& contact, const RigidBody& a, const RigidBody& b,
                                           double reach) {
