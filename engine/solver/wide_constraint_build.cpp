@@ -7,6 +7,7 @@
 // -mfma, and Eigen's 3-vector products sum left to right), so a lane holds
 // the scalar numbers bit for bit. Slots a manifold does not use hold zeros.
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 
@@ -34,6 +35,19 @@ Lanes dot(const Lanes* a, const Lanes* b) { return a[0] * b[0] + a[1] * b[1] + a
 void turn(const Lanes (&inertia)[3][3], const Lanes* crossed, const Lanes* mask, Lanes* out) {
   for (int i = 0; i < 3; ++i)
     out[i] = (inertia[i][0] * crossed[0] + inertia[i][1] * crossed[1] + inertia[i][2] * crossed[2]) * mask[i];
+}
+
+// Whether the masked `inertia x cross` is `scale x cross` for every cross:
+// inertia is scale times the identity, its off-diagonal entries +0 (so they
+// add nothing, not even a zero's sign, to a non-zero product), and no axis is
+// masked. Then the solve needs no stored turn.
+bool spinScale(const Mat3& inertia, const Vec3& mask, double& scale) {
+  scale = inertia(0, 0);
+  if (mask != Vec3::Ones() || inertia(1, 1) != scale || inertia(2, 2) != scale) return false;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (i != j && std::bit_cast<std::uint64_t>(inertia(i, j)) != 0) return false;
+  return true;
 }
 
 // rowMass of point_constraint.cpp: 1 / k where k > 0, else 0.
@@ -147,7 +161,8 @@ SlotInput slotInput(const std::uint32_t* members, int count, const std::vector<C
 }
 
 // buildPointConstraints for one slot of every lane. Returns the slot's restitution.
-Lanes buildSlot(const FrameLanes& frame, const SlotInput& in, const ConstraintSettings& settings, WidePoint& out) {
+Lanes buildSlot(const FrameLanes& frame, const SlotInput& in, const ConstraintSettings& settings, WidePoint& out,
+                WideTurns* turns) {
   const Lanes zero = Lanes::zero();
   const auto keep = [&in, zero](Lanes value) { return simd::select(in.present, value, zero); };
   const Lanes apart = simd::greater(in.separation, Lanes::all(settings.linearSlop));
@@ -183,8 +198,9 @@ Lanes buildSlot(const FrameLanes& frame, const SlotInput& in, const ConstraintSe
     for (int axis = 0; axis < 3; ++axis) {
       out.crossA[row][axis] = keep(crossA[row][axis]);
       out.crossB[row][axis] = keep(crossB[row][axis]);
-      out.turnA[row][axis] = keep(turnA[row][axis]);
-      out.turnB[row][axis] = keep(turnB[row][axis]);
+      if (turns == nullptr) continue;
+      turns->turnA[row][axis] = keep(turnA[row][axis]);
+      turns->turnB[row][axis] = keep(turnB[row][axis]);
     }
   out.gap = zero;
   out.largestImpulse = zero;
@@ -227,6 +243,16 @@ unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::
     for (int axis = 0; axis < 3; ++axis) group.direction[row][axis] = frame.directions[row][axis];
   group.inverseMassA = frame.inverseMassA;
   group.inverseMassB = frame.inverseMassB;
+  group.isotropic = true;
+  group.spinScaleA = group.spinScaleB = Lanes::zero();
+  for (int lane = 0; lane < count; ++lane) {
+    double scaleA = 0.0, scaleB = 0.0;
+    const bool both = spinScale(frames[lane].inverseInertiaA, frames[lane].angularMaskA, scaleA) &&
+                      spinScale(frames[lane].inverseInertiaB, frames[lane].angularMaskB, scaleB);
+    group.isotropic = group.isotropic && both;
+    simd::setLane(group.spinScaleA, lane, scaleA);
+    simd::setLane(group.spinScaleB, lane, scaleB);
+  }
   unsigned bouncing = 0;
   for (int p = 0; p < group.pointSlots; ++p) {
     const SlotInput in = slotInput(members, count, manifolds, p);
@@ -235,7 +261,8 @@ unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::
       group.localB[p][axis] = in.localB[axis];
     }
     group.present[p] = in.present;
-    const Lanes restitution = buildSlot(frame, in, settings, group.points[p]);
+    const Lanes restitution =
+        buildSlot(frame, in, settings, group.points[p], group.isotropic ? nullptr : &group.turns[p]);
     for (int lane = 0; lane < count; ++lane)
       if (simd::getLane(restitution, lane) != 0.0) bouncing |= 1u << lane;
   }

@@ -10,7 +10,9 @@
 // same order: normal rows point by point (in reverse on alternate sweeps;
 // empty slots come last, so reversing all four slots visits the real points
 // in their reverse order), then friction. The speculative manifolds solved
-// all points together (the 4x4 approach solve) stay scalar.
+// all points together (the 4x4 approach solve) stay scalar. An isotropic
+// group's turns (cross times scale) are the scalar turns as numbers; only a
+// zero may come out with the other sign, which changes no sum.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -28,33 +30,49 @@
 
 namespace physdbg {
 
-// One point slot of every lane.
+// One point slot of every lane: what every sweep reads.
 struct WidePoint {
-  simd::Lanes crossA[3][3], crossB[3][3];  // [row][axis]
-  simd::Lanes turnA[3][3], turnB[3][3];
+  simd::Lanes crossA[3][3], crossB[3][3];  // [row][axis]: arm x row direction
   simd::Lanes normalMass, tangentMass[2], friction, gap;
   simd::Lanes normalImpulse, tangentImpulse[2], largestImpulse, stepNormalImpulse;
+};
+
+// What a unit impulse along each row does to each body's spin (inverse
+// inertia x cross). Kept only for groups whose bodies' inverse inertia is not
+// a multiple of the identity (WideManifolds::isotropic).
+struct WideTurns {
+  simd::Lanes turnA[3][3], turnB[3][3];  // [row][axis]
 };
 
 // No member is initialised by default: buildWideManifolds writes every
 // field a sweep reads, and a batch's groups (WideGroups) are made without
 // zeroing first (6 KB a group, 7% of a box pile's instructions).
+//
+// The sweeps stream a large island's groups from memory (a 100-row pyramid
+// has 22 MB of them), so what they read comes first and in one piece; the
+// rest follows: the anchors, read once per substep to measure gaps, and the
+// turns, which bodies with isotropic inertia (spheres, cubes) do without.
 struct WideManifolds {
   static constexpr std::uint32_t empty = ~0u;
   std::array<std::uint32_t, simd::width> manifold, bodyA, bodyB;  // `empty` in unused lanes
   std::array<bool, simd::width> writableA, writableB;             // a movable body in the lane
-  simd::Lanes direction[3][3];  // [row][axis]: the normal, then the two tangents
-  simd::Lanes inverseMassA, inverseMassB;  // as scaled for the contact
-  simd::Lanes linearMaskA[3], linearMaskB[3];
-  bool linearLocks;  // some lane's mask is not 1 on every axis
-  std::array<WidePoint, ContactManifold::maxPoints> points;
-  // Each point's anchors in its bodies' frames, for the gaps: apart from
-  // the points, so the sweeps do not stream them.
-  simd::Lanes localA[ContactManifold::maxPoints][3], localB[ContactManifold::maxPoints][3];
-  simd::Lanes present[ContactManifold::maxPoints];  // mask: the lane's manifold has this point
+  bool linearLocks;                                               // some lane's mask is not 1 on every axis
+  // Every lane's inverse inertia, on both sides, is spinScale times the
+  // identity with no rotation locked: a turn is the cross times that scale
+  // (zero for an immovable body), and `turns` is left unwritten.
+  bool isotropic;
   // The most points any lane has: slots past it are empty in every lane, so
   // a group of sphere contacts (one point each) solves one slot, not four.
   int pointSlots;
+  simd::Lanes direction[3][3];  // [row][axis]: the normal, then the two tangents
+  simd::Lanes inverseMassA, inverseMassB;  // as scaled for the contact
+  simd::Lanes spinScaleA, spinScaleB;      // as scaled for the contact; 0 unless isotropic
+  simd::Lanes linearMaskA[3], linearMaskB[3];
+  std::array<WidePoint, ContactManifold::maxPoints> points;
+  // Each point's anchors in its bodies' frames, for the gaps.
+  simd::Lanes localA[ContactManifold::maxPoints][3], localB[ContactManifold::maxPoints][3];
+  simd::Lanes present[ContactManifold::maxPoints];  // mask: the lane's manifold has this point
+  std::array<WideTurns, ContactManifold::maxPoints> turns;  // unless isotropic
 };
 
 // Makes elements default-initialised, where std::allocator value-initialises

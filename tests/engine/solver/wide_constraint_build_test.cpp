@@ -37,7 +37,16 @@ Mat3 randomInverseInertia(std::mt19937& random) {
   return rotation * Vec3(moment(random), moment(random), moment(random)).asDiagonal() * rotation.transpose();
 }
 
-ManifoldFrame randomFrame(std::mt19937& random, const ContactManifold& manifold, const ManifoldTangents& tangents) {
+// Spheres and cubes: the same moment about every axis.
+Mat3 isotropicInverseInertia(std::mt19937& random) {
+  std::uniform_real_distribution<double> moment(0.2, 5.0);
+  return Mat3::Identity() * moment(random);
+}
+
+// isotropic: every body's inverse inertia is a multiple of the identity
+// (zero for the still ones) and no rotation is locked.
+ManifoldFrame randomFrame(std::mt19937& random, const ContactManifold& manifold, const ManifoldTangents& tangents,
+                          bool isotropic) {
   std::bernoulli_distribution locked(0.2), still(0.3);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   ManifoldFrame frame;
@@ -46,11 +55,12 @@ ManifoldFrame randomFrame(std::mt19937& random, const ContactManifold& manifold,
   frame.directions[0] = manifold.normal;
   frame.directions[1] = tangents[0];
   frame.directions[2] = tangents[1];
-  frame.inverseInertiaA = randomInverseInertia(random);
-  frame.inverseInertiaB = still(random) ? Mat3::Zero() : randomInverseInertia(random);
+  frame.inverseInertiaA = isotropic ? isotropicInverseInertia(random) : randomInverseInertia(random);
+  frame.inverseInertiaB =
+      still(random) ? Mat3::Zero() : (isotropic ? isotropicInverseInertia(random) : randomInverseInertia(random));
   for (int axis = 0; axis < 3; ++axis) {
-    frame.angularMaskA[axis] = locked(random) ? 0.0 : 1.0;
-    frame.angularMaskB[axis] = locked(random) ? 0.0 : 1.0;
+    frame.angularMaskA[axis] = !isotropic && locked(random) ? 0.0 : 1.0;
+    frame.angularMaskB[axis] = !isotropic && locked(random) ? 0.0 : 1.0;
   }
   frame.linearVelocityA = randomVector(random, 2.0);
   frame.angularVelocityA = randomVector(random, 2.0);
@@ -63,7 +73,7 @@ ManifoldFrame randomFrame(std::mt19937& random, const ContactManifold& manifold,
   return frame;
 }
 
-Case randomCase(std::mt19937& random, int count) {
+Case randomCase(std::mt19937& random, int count, bool isotropic = false) {
   Case result;
   std::uniform_int_distribution<int> points(1, ContactManifold::maxPoints);
   std::uniform_real_distribution<double> separation(-0.02, 0.03);
@@ -85,7 +95,7 @@ Case randomCase(std::mt19937& random, int count) {
     ManifoldTangents tangents;
     tangents[0] = manifold.normal.unitOrthogonal();
     tangents[1] = manifold.normal.cross(tangents[0]);
-    result.frames.push_back(randomFrame(random, manifold, tangents));
+    result.frames.push_back(randomFrame(random, manifold, tangents, isotropic));
     result.manifolds.push_back(manifold);
     result.tangents.push_back(tangents);
   }
@@ -106,7 +116,8 @@ TEST(WideConstraintBuild, LanesHoldTheScalarConstraintsBitForBit) {
   const ConstraintSettings settings{0.005, 0.02, 0.2};
   for (int trial = 0; trial < 200; ++trial) {
     const int count = 1 + trial % simd::width;
-    const Case input = randomCase(random, count);
+    const bool isotropic = trial % 3 == 2;
+    const Case input = randomCase(random, count, isotropic);
     std::vector<std::uint32_t> members(count);
     for (int lane = 0; lane < count; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
     WideManifolds group;
@@ -133,8 +144,17 @@ TEST(WideConstraintBuild, LanesHoldTheScalarConstraintsBitForBit) {
           for (int axis = 0; axis < 3; ++axis) {
             expectSame(c.crossA[row][axis], wide.crossA[row][axis], lane, "crossA", p);
             expectSame(c.crossB[row][axis], wide.crossB[row][axis], lane, "crossB", p);
-            expectSame(c.turnA[row][axis], wide.turnA[row][axis], lane, "turnA", p);
-            expectSame(c.turnB[row][axis], wide.turnB[row][axis], lane, "turnB", p);
+            if (!group.isotropic) {
+              expectSame(c.turnA[row][axis], group.turns[p].turnA[row][axis], lane, "turnA", p);
+              expectSame(c.turnB[row][axis], group.turns[p].turnB[row][axis], lane, "turnB", p);
+              continue;
+            }
+            // The solve's turn: the cross times the lane's scale, the same
+            // number (a zero's sign aside, which no sum keeps).
+            const double turnA = simd::getLane(wide.crossA[row][axis] * group.spinScaleA, lane);
+            const double turnB = simd::getLane(wide.crossB[row][axis] * group.spinScaleB, lane);
+            EXPECT_EQ(c.turnA[row][axis], turnA) << "isotropic turnA, lane " << lane << ", point " << p;
+            EXPECT_EQ(c.turnB[row][axis], turnB) << "isotropic turnB, lane " << lane << ", point " << p;
           }
       }
       EXPECT_EQ(bounces, (bouncing >> lane & 1u) != 0) << "trial " << trial << ", lane " << lane;
@@ -142,16 +162,104 @@ TEST(WideConstraintBuild, LanesHoldTheScalarConstraintsBitForBit) {
       // A slot the manifold lacks changes nothing: no mass, no impulse.
       for (int p = manifold.pointCount; p < mostPoints; ++p) {
         expectSame(0.0, group.points[p].normalMass, lane, "empty normalMass", p);
-        expectSame(0.0, group.points[p].turnA[1][2], lane, "empty turnA", p);
+        if (!group.isotropic) expectSame(0.0, group.turns[p].turnA[1][2], lane, "empty turnA", p);
+        expectSame(0.0, group.points[p].crossA[1][2], lane, "empty crossA", p);
         expectSame(0.0, group.points[p].normalImpulse, lane, "empty normalImpulse", p);
       }
     }
     EXPECT_EQ(group.pointSlots, mostPoints);
+    EXPECT_EQ(group.isotropic, isotropic) << "trial " << trial;
     for (int lane = count; lane < simd::width; ++lane) {
       EXPECT_EQ(group.manifold[lane], WideManifolds::empty);
       EXPECT_FALSE(group.writableA[lane]);
       for (int p = 0; p < group.pointSlots; ++p) expectSame(0.0, group.points[p].tangentMass[0], lane, "empty lane", p);
     }
+    if (HasFailure()) FAIL() << "trial " << trial;
+  }
+}
+
+// A group takes the scaled-cross turns only when every lane, on both sides,
+// has an inverse inertia that is exactly a scale times the identity and no
+// locked rotation.
+TEST(WideConstraintBuild, IsotropicOnlyWhenEveryLaneTurnsByAScale) {
+  std::mt19937 random(41);
+  const ConstraintSettings settings{0.005, 0.02, 0.2};
+  const auto build = [&](const Case& input) {
+    std::vector<std::uint32_t> members(simd::width);
+    for (int lane = 0; lane < simd::width; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
+    WideManifolds group;
+    buildWideManifolds(members.data(), simd::width, input.manifolds, input.frames.data(), input.bodies, settings,
+                       group);
+    return group;
+  };
+  for (int trial = 0; trial < 20; ++trial) {
+    Case input = randomCase(random, simd::width, true);
+    EXPECT_TRUE(build(input).isotropic);
+    const int lane = trial % simd::width;
+    Case locked = input;
+    locked.frames[lane].angularMaskB[trial % 3] = 0.0;
+    EXPECT_FALSE(build(locked).isotropic);
+    Case turned = input;
+    turned.frames[lane].inverseInertiaA = randomInverseInertia(random);
+    EXPECT_FALSE(build(turned).isotropic);
+    Case stretched = input;
+    stretched.frames[lane].inverseInertiaA(2, 2) *= 1.5;
+    EXPECT_FALSE(build(stretched).isotropic);
+    // -0 off the diagonal is the same matrix, but its product's zeros could
+    // take its sign: only +0 counts.
+    Case negativeZero = input;
+    negativeZero.frames[lane].inverseInertiaA(0, 1) = -0.0;
+    EXPECT_FALSE(build(negativeZero).isotropic);
+  }
+}
+
+// The same isotropic groups solved with the scaled crosses and with stored
+// turns (a -0 off the diagonal makes the build store them) give the same
+// velocities and impulses, as numbers.
+TEST(WideContactRows, IsotropicGroupsSolveAsStoredTurnsWould) {
+  std::mt19937 random(43);
+  const ConstraintSettings settings{0.005, 0.02, 0.2};
+  const StepContext step;
+  const SubstepContext substeps = substepContext(step, 4, 60.0, 5.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    Case input = randomCase(random, simd::width, true);
+    for (SolverBody& body : input.bodies) {
+      body.motion.linearVelocity = randomVector(random, 2.0);
+      body.motion.angularVelocity = randomVector(random, 2.0);
+    }
+    Case stored = input;
+    for (ManifoldFrame& frame : stored.frames) frame.inverseInertiaA(1, 0) = -0.0;
+    std::vector<std::uint32_t> members(simd::width);
+    for (int lane = 0; lane < simd::width; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
+    WideGroups scaled(1), turned(1);
+    buildWideManifolds(members.data(), simd::width, input.manifolds, input.frames.data(), input.bodies, settings,
+                       scaled[0]);
+    buildWideManifolds(members.data(), simd::width, stored.manifolds, stored.frames.data(), stored.bodies, settings,
+                       turned[0]);
+    ASSERT_TRUE(scaled[0].isotropic);
+    ASSERT_FALSE(turned[0].isotropic);
+    for (WideGroups* groups : {&scaled, &turned})
+      for (int p = 0; p < (*groups)[0].pointSlots; ++p) (*groups)[0].points[p].gap = Lanes::all(0.01 * (p - 1));
+    const auto sweep = [&](WideGroups& groups, std::vector<SolverBody>& bodies) {
+      const std::span<WideManifolds> these(groups.data(), groups.size());
+      warmStartWide(these, bodies);
+      solveWide(these, bodies, WideSweep{&substeps, 3.0, true, false});
+      solveWide(these, bodies, WideSweep{&substeps, 3.0, false, true});
+    };
+    sweep(scaled, input.bodies);
+    sweep(turned, stored.bodies);
+    for (std::size_t id = 0; id < input.bodies.size(); ++id)
+      for (int axis = 0; axis < 3; ++axis) {
+        EXPECT_EQ(input.bodies[id].motion.linearVelocity[axis], stored.bodies[id].motion.linearVelocity[axis]);
+        EXPECT_EQ(input.bodies[id].motion.angularVelocity[axis], stored.bodies[id].motion.angularVelocity[axis]);
+      }
+    for (int p = 0; p < scaled[0].pointSlots; ++p)
+      for (int lane = 0; lane < simd::width; ++lane) {
+        EXPECT_EQ(simd::getLane(scaled[0].points[p].normalImpulse, lane),
+                  simd::getLane(turned[0].points[p].normalImpulse, lane));
+        EXPECT_EQ(simd::getLane(scaled[0].points[p].tangentImpulse[1], lane),
+                  simd::getLane(turned[0].points[p].tangentImpulse[1], lane));
+      }
     if (HasFailure()) FAIL() << "trial " << trial;
   }
 }
@@ -194,7 +302,8 @@ TEST(WideConstraintBuild, LaneGapsMatchTheScalarGapsBitForBit) {
 // (they share no movable body); each must end exactly as it would alone.
 // Seven groups make a bundle of four, then of two, then one alone; groups
 // with one point slot among groups with four break bundles; one group has a
-// locked axis, so its bundle takes the masks; some bodies do not move.
+// locked axis, so its bundle takes the masks; two are isotropic, which runs
+// them apart from the rest; some bodies do not move.
 TEST(WideContactRows, GroupsSolvedSideBySideEndAsTheyWouldAlone) {
   std::mt19937 random(29);
   const ConstraintSettings settings{0.005, 0.02, 0.2};
@@ -204,6 +313,15 @@ TEST(WideContactRows, GroupsSolvedSideBySideEndAsTheyWouldAlone) {
   for (int trial = 0; trial < 20; ++trial) {
     Case input = randomCase(random, groupCount * simd::width);
     const int onePoint = trial % groupCount, locked = (trial + 3) % groupCount;
+    // Two isotropic groups: they run apart from the others, side by side
+    // when they are neighbours.
+    for (const int isotropic : {(trial + 5) % groupCount, (trial + 6) % groupCount})
+      for (int lane = 0; lane < simd::width; ++lane) {
+        ManifoldFrame& frame = input.frames[isotropic * simd::width + lane];
+        frame.inverseInertiaA = isotropicInverseInertia(random);
+        frame.inverseInertiaB = isotropicInverseInertia(random);
+        frame.angularMaskA = frame.angularMaskB = Vec3::Ones();
+      }
     for (std::size_t m = 0; m < input.manifolds.size(); ++m)
       if (static_cast<int>(m) / simd::width == onePoint) input.manifolds[m].pointCount = 1;
     for (std::size_t id = 0; id < input.bodies.size(); ++id) {
