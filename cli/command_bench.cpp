@@ -1,12 +1,13 @@
 #include <cstdio>
 #include <iostream>
-
 #include <nlohmann/json.hpp>
 
 #include "bench/bench.h"
+#include "bench/repeats.h"
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/common_options.h"
+#include "cli/number_option.h"
 #include "gpu/gpu_collision.h"
 
 namespace physdbg::cli {
@@ -22,12 +23,24 @@ std::string formatNumber(const nlohmann::json& value) {
 }
 
 void printRow(const nlohmann::json& record) {
-  std::printf("%-34s %8s %7s %12s %-22s %12s %8s\n", formatNumber(record["name"]).c_str(),
-              formatNumber(record["n"]).c_str(), formatNumber(record.value("threads", nlohmann::json())).c_str(),
-              formatNumber(record["ours_ms"]).c_str(),
-              formatNumber(record["peer"]).c_str(), formatNumber(record["peer_ms"]).c_str(),
-              formatNumber(record["ratio"]).c_str());
+  // With --repeat, the spread of the runs' ratios follows the median.
+  const nlohmann::json none;
+  const std::string range =
+      record.value("ratio_min", none).is_number()
+          ? "  (" + formatNumber(record["ratio_min"]) + "-" + formatNumber(record["ratio_max"]) + ")"
+          : "";
+  std::printf("%-34s %8s %7s %12s %-22s %12s %8s%s\n", formatNumber(record["name"]).c_str(),
+              formatNumber(record["n"]).c_str(), formatNumber(record.value("threads", none)).c_str(),
+              formatNumber(record["ours_ms"]).c_str(), formatNumber(record["peer"]).c_str(),
+              formatNumber(record["peer_ms"]).c_str(), formatNumber(record["ratio"]).c_str(), range.c_str());
   std::fflush(stdout);
+}
+
+void emit(const nlohmann::json& record, bool json) {
+  if (json)
+    std::cout << record.dump() << std::endl;
+  else
+    printRow(record);
 }
 
 }  // namespace
@@ -35,24 +48,31 @@ void printRow(const nlohmann::json& record) {
 int runBench(const std::vector<std::string>& args) {
   std::string names;
   for (const auto& benchmark : bench::allBenchmarks()) names += "\n  " + benchmark.name + ": " + benchmark.description;
-  const CommandSpec spec{"bench",
-                         "[NAME] [--json] [--quick] [--solver seed|sequential_impulse] [--threads N] [--collision cpu|gpu] [--backend B]",
-                         "Runs the benchmark NAME, or all of them, each side by side with its peer engine in the same "
-                         "run.\nratio = ours / peer: below 1 means physdbg is faster. Benchmarks:" + names,
-                         {{"--json", "", "", "print one JSON object per line instead of a table"},
-                          {"--quick", "", "", "small sizes (a smoke test, not a measurement)"},
-                          {"--solver", "", "seed|sequential_impulse",
-                           "physdbg's contact solver in the scene benchmarks (drop, pyramid; seed runs only it)"},
-                          {"--threads", "", "N",
-                           "physdbg's threads in the scene benchmarks (drop, pyramid): N alone (0 every core); by "
-                           "default one row on 1 thread and one on every core, each with its ratio to Bullet"},
-                          {"--collision", "", "cpu|gpu",
-                           "where physdbg's collision detection runs in the scene benchmarks (drop, pyramid): cpu "
-                           "(default) or compute shaders on the --backend context"},
-                          {"--backend", "", "osmesa|egl",
-                           "GL context of the gpu benchmark: OSMesa's llvmpipe (default) or EGL, which reaches a GPU"}},
-                         0,
-                         1};
+  const CommandSpec spec{
+      "bench",
+      "[NAME] [--json] [--quick] [--repeat N] [--solver seed|sequential_impulse] [--threads N] [--collision cpu|gpu] "
+      "[--backend B]",
+      "Runs the benchmark NAME, or all of them, each side by side with its peer engine in the same "
+      "run.\nratio = ours / peer: below 1 means physdbg is faster. Benchmarks:" +
+          names,
+      {{"--json", "", "", "print one JSON object per line instead of a table"},
+       {"--quick", "", "", "small sizes (a smoke test, not a measurement)"},
+       {"--repeat", "", "N",
+        "run everything N times (1-20, default 1), each run side by side with the peer, and print "
+        "per case the run with the median ratio, with every run's ratio (ratio_runs) and their "
+        "range"},
+       {"--solver", "", "seed|sequential_impulse",
+        "physdbg's contact solver in the scene benchmarks (drop, pyramid; seed runs only it)"},
+       {"--threads", "", "N",
+        "physdbg's threads in the scene benchmarks (drop, pyramid): N alone (0 every core); by "
+        "default one row on 1 thread and one on every core, each with its ratio to Bullet"},
+       {"--collision", "", "cpu|gpu",
+        "where physdbg's collision detection runs in the scene benchmarks (drop, pyramid): cpu "
+        "(default) or compute shaders on the --backend context"},
+       {"--backend", "", "osmesa|egl",
+        "GL context of the gpu benchmark: OSMesa's llvmpipe (default) or EGL, which reaches a GPU"}},
+      0,
+      1};
   const auto parsed = Arguments::parse(spec, args);
   if (!parsed) return 0;
   const std::string wanted = parsed->positional().empty() ? "" : parsed->positional()[0];
@@ -62,6 +82,7 @@ int runBench(const std::vector<std::string>& args) {
   }
   if (selected.empty()) throw UsageError("unknown benchmark '" + wanted + "'; available:" + names);
   const bool json = parsed->has("--json");
+  const int repeats = numberOption(*parsed, "--repeat", 1, 1, 20);
   if (!json)
     printRow({{"name", "name"}, {"n", "n"}, {"threads", "threads"}, {"ours_ms", "ours_ms"}, {"peer", "peer"},
               {"peer_ms", "peer_ms"}, {"ratio", "ratio"}});
@@ -73,19 +94,24 @@ int runBench(const std::vector<std::string>& args) {
   const render::Backend backend = render::parseBackend(options.backend);  // a bad name fails before any run
   if (readCollisionDevice(*parsed) == CollisionDevice::Gpu)
     options.makeGpuCollision = [backend] { return std::make_shared<gpu::GpuCollision>(backend); };
-  for (const auto& benchmark : selected) {
-    try {
-      benchmark.run(options, [&](const nlohmann::json& record) {
-        if (json) {
-          std::cout << record.dump() << std::endl;
-        } else {
-          printRow(record);
-        }
-      });
-    } catch (const gpu::ComputeUnavailable& error) {
-      throw UsageError("bench " + benchmark.name + ": " + error.what());
+  std::vector<std::vector<nlohmann::json>> runs(repeats);
+  for (int run = 0; run < repeats; ++run) {
+    if (repeats > 1) std::cerr << "bench: run " << run + 1 << " of " << repeats << std::endl;
+    for (const auto& benchmark : selected) {
+      try {
+        benchmark.run(options, [&](const nlohmann::json& record) {
+          if (repeats == 1)
+            emit(record, json);
+          else
+            runs[run].push_back(record);
+        });
+      } catch (const gpu::ComputeUnavailable& error) {
+        throw UsageError("bench " + benchmark.name + ": " + error.what());
+      }
     }
   }
+  if (repeats > 1)
+    for (const nlohmann::json& record : bench::medianOfRuns(runs)) emit(record, json);
   return 0;
 }
 

@@ -1,17 +1,18 @@
 // End-to-end tests of the physdbg command: exit codes, messages, outputs.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 
-#include "tests/support/visual_test_support.h"
 #include "render/image.h"
+#include "tests/support/visual_test_support.h"
 
 namespace {
 
@@ -54,17 +55,43 @@ TEST(Cli, BadUsageExitsTwoWithAMessage) {
     const char* arguments;
     const char* mentions;
   };
-  for (const Case& c : {Case{"frobnicate", "unknown command"}, Case{"", "usage"},
-                        Case{"render default --sizes 10x10", "--sizes"}, Case{"render default --size 12", "--size"},
-                        Case{"render default --frames -3", "--frames"}, Case{"render default --layers shapes,glow", "glow"},
-                        Case{"simulate", "missing argument"}, Case{"simulate default --steps zero", "--steps"},
-                        Case{"simulate no_such_scene", "no_such_scene"}, Case{"bench no_such_bench", "no_such_bench"},
-                        Case{"render default -o /dev/null/frames", "/dev/null/frames"},
-                        Case{"simulate bounce --solver impulses", "--solver"},
-                        Case{"bench pyramid --quick --solver impulses", "--solver"}}) {
+  for (const Case& c :
+       {Case{"frobnicate", "unknown command"}, Case{"", "usage"}, Case{"render default --sizes 10x10", "--sizes"},
+        Case{"render default --size 12", "--size"}, Case{"render default --frames -3", "--frames"},
+        Case{"render default --layers shapes,glow", "glow"}, Case{"simulate", "missing argument"},
+        Case{"simulate default --steps zero", "--steps"}, Case{"simulate no_such_scene", "no_such_scene"},
+        Case{"bench no_such_bench", "no_such_bench"}, Case{"render default -o /dev/null/frames", "/dev/null/frames"},
+        Case{"simulate bounce --solver impulses", "--solver"},
+        Case{"bench pyramid --quick --solver impulses", "--solver"}, Case{"bench seed --quick --repeat 0", "--repeat"},
+        Case{"bench seed --quick --repeat 21", "--repeat"}}) {
     const Result result = run(c.arguments);
     EXPECT_EQ(result.exitCode, 2) << c.arguments << "\n" << result.output;
     EXPECT_NE(result.output.find(c.mentions), std::string::npos) << c.arguments << "\n" << result.output;
+  }
+}
+
+// --repeat N runs the benchmarks N times and prints one record per case:
+// the median run's, with every run's ratio.
+TEST(Cli, BenchRepeatPrintsOneRecordPerCaseWithEveryRunsRatio) {
+  const Result once = run("bench seed --quick --json");
+  const Result thrice = run("bench seed --quick --json --repeat 3");
+  ASSERT_EQ(once.exitCode, 0) << once.output;
+  ASSERT_EQ(thrice.exitCode, 0) << thrice.output;
+  const auto records = [](const std::string& output) {
+    std::vector<nlohmann::json> result;
+    std::istringstream lines(output);
+    for (std::string line; std::getline(lines, line);)
+      if (!line.empty() && line[0] == '{') result.push_back(nlohmann::json::parse(line));
+    return result;
+  };
+  const std::vector<nlohmann::json> single = records(once.output), repeated = records(thrice.output);
+  ASSERT_FALSE(single.empty());
+  ASSERT_EQ(repeated.size(), single.size());
+  for (std::size_t i = 0; i < single.size(); ++i) {
+    EXPECT_EQ(repeated[i]["name"], single[i]["name"]);
+    EXPECT_EQ(repeated[i]["repeats"], 3);
+    ASSERT_EQ(repeated[i]["ours_ms_runs"].size(), 3u);
+    EXPECT_EQ(repeated[i]["ratio_runs"].size(), 3u);
   }
 }
 
