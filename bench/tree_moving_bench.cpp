@@ -1,14 +1,17 @@
 // "moving": every proxy jitters every step; time per step to update the broad
 // phase and get the pairs, ours and Bullet's btDbvtBroadphase on the same boxes.
 #include <algorithm>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
+#include "bench/side_by_side.h"
 #include "bench/tree_bench.h"
 #include "bench/tree_bench_support.h"
 #include "bench/tree_bullet_peer.h"
 #include "engine/broadphase/tree_broad_phase.h"
+#include "engine/parallel/task_system.h"
 
 namespace physdbg::bench {
 namespace {
@@ -38,23 +41,40 @@ long long bruteTightOverlaps(const std::vector<Aabb>& boxes) {
   return count;
 }
 
-// One of our configurations, stepped alongside the peer.
+// One of our configurations, stepped alongside the peer. Its task system
+// runs the pair queries (1 thread: on the caller's thread).
 struct Variant {
+  Variant(const char* name, const DynamicAabbTreeOptions& options, int threads)
+      : name(name), tasks(std::make_unique<TaskSystem>(threads)), broadPhase(options, tasks.get()) {}
   const char* name;
+  std::unique_ptr<TaskSystem> tasks;
   TreeBroadPhase broadPhase;
   std::vector<int> proxies;
   std::vector<BodyPair> pairs;
   double ms = 0.0;
+  double findMs = 0.0;
   long long reinserted = 0;
 };
 
-void emitVariant(const Variant& variant, int steps, const std::vector<Aabb>& boxes, long long bruteTight,
-                 const BulletBroadPhasePeer* peer, double peerMs, const BenchSink& sink) {
+// The same insertion method on one thread: the all-core row's scaling.
+std::optional<double> singleThreadMs(const std::vector<Variant>& variants, const Variant& variant) {
+  for (const Variant& other : variants) {
+    if (std::string(other.name) == variant.name && other.tasks->threadCount() == 1) return other.ms;
+  }
+  return std::nullopt;
+}
+
+void emitVariant(const Variant& variant, std::optional<double> oneThreadMs, int steps, const std::vector<Aabb>& boxes,
+                 long long bruteTight, const BulletBroadPhasePeer* peer, double peerMs, const BenchSink& sink) {
   const DynamicAabbTree& tree = variant.broadPhase.tree();
   nlohmann::json record =
       benchRecord(std::string("moving/") + variant.name, static_cast<long long>(boxes.size()), variant.ms / steps,
                   peer != nullptr ? "bullet-btDbvtBroadphase" : "", peerMs / steps);
+  const int threads = variant.tasks->threadCount();
+  addThreadFields(record, threads, variant.ms / steps,
+                  oneThreadMs ? std::optional<double>(*oneThreadMs / steps) : std::nullopt);
   record["steps"] = steps;
+  record["find_pairs_ms"] = variant.findMs / steps;  // of ours_ms: the pair queries and merge
   record["unit"] = "ms per step (update every proxy + find pairs)";
   record["margin"] = tree.options().margin;
   record["reinserted_per_step"] = static_cast<double>(variant.reinserted) / steps;
@@ -81,12 +101,20 @@ void emitVariant(const Variant& variant, int steps, const std::vector<Aabb>& box
   sink(record);
 }
 
-void runMoving(int count, int steps, const BenchSink& sink) {
+// Every variant steps in the same loop, so a busy spell of the host falls on
+// all of them and on the peer alike. The tree's edits are serial; with more
+// than one thread the pair queries run in parallel (tree_broad_phase.h).
+void runMoving(int count, int steps, const std::vector<int>& threadCounts, const BenchSink& sink) {
   std::vector<Aabb> boxes = boxesInCube(count, 1234);
   const double side = cubeSideFor(count);
   DynamicAabbTreeOptions greedy;
   greedy.insertion = InsertionMethod::Greedy;
-  Variant variants[] = {{"branch-and-bound", TreeBroadPhase{}, {}, {}}, {"greedy", TreeBroadPhase{greedy}, {}, {}}};
+  std::vector<Variant> variants;
+  variants.reserve(2 * threadCounts.size());
+  for (const int threads : threadCounts) {
+    variants.emplace_back("branch-and-bound", DynamicAabbTreeOptions{}, threads);
+    variants.emplace_back("greedy", greedy, threads);
+  }
   for (Variant& variant : variants) {
     for (int i = 0; i < count; ++i) variant.proxies.push_back(variant.broadPhase.addProxy(boxes[i], i, ProxyMotion::Dynamic));
     variant.broadPhase.findPairs(variant.pairs);
@@ -103,26 +131,29 @@ void runMoving(int count, int steps, const BenchSink& sink) {
         for (int i = 0; i < count; ++i) {
           variant.broadPhase.moveProxy(variant.proxies[i], boxes[i], boxes[i].min - previous[i].min);
         }
-        variant.broadPhase.findPairs(variant.pairs);
+        variant.findMs += millisecondsOf([&] { variant.broadPhase.findPairs(variant.pairs); });
       });
       variant.reinserted += variant.broadPhase.stats().proxiesReinserted;
     }
     if (peer) peerMs += peer->step(boxes);
   }
   const long long bruteTight = bruteTightOverlaps(boxes);
-  for (const Variant& variant : variants) emitVariant(variant, steps, boxes, bruteTight, peer.get(), peerMs, sink);
+  for (const Variant& variant : variants) {
+    emitVariant(variant, singleThreadMs(variants, variant), steps, boxes, bruteTight, peer.get(), peerMs, sink);
+  }
 }
 
 }  // namespace
 
 void runMovingCase(const BenchOptions& options, const BenchSink& sink) {
+  const std::vector<int> threadCounts = benchThreadCounts(options);
   if (options.quick) {
-    runMoving(512, 5, sink);
-    runMoving(2048, 3, sink);
+    runMoving(512, 5, threadCounts, sink);
+    runMoving(2048, 3, threadCounts, sink);
     return;
   }
-  runMoving(8192, 300, sink);
-  runMoving(32768, 300, sink);
+  runMoving(8192, 300, threadCounts, sink);
+  runMoving(32768, 300, threadCounts, sink);
 }
 
 }  // namespace physdbg::bench

@@ -50,7 +50,7 @@ std::unique_ptr<BroadPhase> makeBroadPhase(const WorldSettings& settings, const 
   options.insertion = settings.treeInsertion;
   options.rotations = settings.treeRotations;
   if (offload != nullptr) return offload->makeBroadPhase(options);
-  return std::make_unique<TreeBroadPhase>(options);
+  return std::make_unique<TreeBroadPhase>(options, &tasks);
 }
 
 }  // namespace

@@ -3,6 +3,9 @@
 // proxies whose fat box changed (reinserted, added, woken, put to sleep) query
 // the tree; pairs between proxies that did not change are carried over from
 // the previous call, since neither their boxes nor their eligibility changed.
+// With a task system the queries run in parallel, in fixed pieces of the
+// changed list; their pairs are sorted before they are merged, so the pairs
+// and the tree are the same for any thread count.
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -12,9 +15,12 @@
 
 namespace physdbg {
 
+class TaskSystem;
+
 class TreeBroadPhase final : public BroadPhase {
  public:
-  explicit TreeBroadPhase(const DynamicAabbTreeOptions& options = {});
+  // tasks: not owned, must outlive the broad phase; null queries on the caller's thread.
+  explicit TreeBroadPhase(const DynamicAabbTreeOptions& options = {}, const TaskSystem* tasks = nullptr);
 
   int addProxy(const Aabb& tightBox, std::uint32_t body, ProxyMotion motion) override;
   void removeProxy(int proxy) override;
@@ -41,20 +47,32 @@ class TreeBroadPhase final : public BroadPhase {
     auto operator<=>(const ProxyPair&) const = default;
   };
 
+  // What one piece of the changed list's queries found. Kept between calls
+  // so the lists keep their capacity. A cache line each: neighbouring pieces
+  // run on different threads, and every pair found moves its list's end.
+  struct alignas(64) QueryPiece {
+    std::vector<ProxyPair> pairs;
+    std::vector<int> stack;
+    long long boxesTested = 0;
+  };
+
   void touch(int proxy);
   bool drivesPairs(int proxy) const;
-  long long queryChanged(int proxy);
+  void queryPiece(std::size_t begin, std::size_t end, QueryPiece& piece) const;
+  long long queryChanged(int proxy, QueryPiece& piece) const;
+  void queryAllChanged();
   void mergeFreshPairs();
   void orderForLocality();
   void requireProxy(int proxy, const char* operation) const;
 
   DynamicAabbTree tree_;
+  const TaskSystem* tasks_ = nullptr;
   std::vector<ProxyState> proxies_;  // indexed by proxy id
   std::vector<int> changed_;
   std::vector<ProxyPair> pairs_;  // persistent, sorted
   std::vector<ProxyPair> fresh_;
   std::vector<ProxyPair> merged_;
-  std::vector<int> stack_;
+  std::vector<QueryPiece> pieces_;
   std::vector<std::pair<std::uint32_t, int>> keyed_;  // Morton key, proxy
   BroadPhaseStats stats_;
   long long reinsertedSinceFind_ = 0;

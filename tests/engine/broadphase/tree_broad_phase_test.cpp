@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/broadphase/brute_force_broad_phase.h"
+#include "engine/parallel/task_system.h"
 #include "tests/engine/broadphase/broad_phase_test_helpers.h"
 
 namespace physdbg {
@@ -142,6 +143,58 @@ TEST(TreeBroadPhase, PairsEqualBruteForceOnADegenerateDeepTree) {
     ASSERT_EQ(pairs, expectedPairs(broadPhase, proxies)) << "frame " << frame;
   }
   EXPECT_FALSE(pairs.empty());
+}
+
+// Enough changed proxies that the queries run in parallel pieces (at least
+// 4096, tree_broad_phase.cpp): 1, 2 and 4 threads must give the same pairs
+// and the same counters every frame, and the pairs the contract asks for.
+TEST(TreeBroadPhase, ThreadsGiveTheSamePairsAndCounters) {
+  TaskSystem two(2), four(4);
+  std::vector<TreeBroadPhase> broadPhases;
+  broadPhases.reserve(3);
+  broadPhases.emplace_back();
+  broadPhases.emplace_back(DynamicAabbTreeOptions{}, &two);
+  broadPhases.emplace_back(DynamicAabbTreeOptions{}, &four);
+  std::mt19937 random(23);
+  std::map<int, ProxyRecord> proxies;
+  for (std::uint32_t body = 0; body < 6000; ++body) {
+    const Aabb box = randomBox(random, 30.0, 0.8);
+    const ProxyMotion motion = body % 7 == 0 ? ProxyMotion::Static : ProxyMotion::Dynamic;
+    int proxy = -1;
+    for (TreeBroadPhase& broadPhase : broadPhases) {
+      const int id = broadPhase.addProxy(box, body, motion);
+      ASSERT_TRUE(proxy == -1 || proxy == id);
+      proxy = id;
+    }
+    proxies[proxy] = {box, body, motion};
+  }
+  std::normal_distribution<double> step(0.0, 0.3);
+  for (int frame = 0; frame < 4; ++frame) {
+    if (frame > 0) {
+      for (auto& [proxy, record] : proxies) {
+        if (record.motion == ProxyMotion::Static) continue;
+        if (random() % 50 == 0) {
+          record.active = !record.active;
+          for (TreeBroadPhase& broadPhase : broadPhases) broadPhase.setProxyActive(proxy, record.active);
+        }
+        const Vec3 displacement(step(random), step(random), step(random));
+        record.box = {record.box.min + displacement, record.box.max + displacement};
+        for (TreeBroadPhase& broadPhase : broadPhases) broadPhase.moveProxy(proxy, record.box, displacement);
+      }
+    }
+    std::vector<BodyPair> serial, parallel;
+    broadPhases[0].findPairs(serial);
+    ASSERT_GE(broadPhases[0].stats().proxiesReinserted, frame == 0 ? 0 : 4096) << "too few queries to split";
+    for (std::size_t i = 1; i < broadPhases.size(); ++i) {
+      broadPhases[i].findPairs(parallel);
+      ASSERT_EQ(parallel, serial) << "frame " << frame << ", broad phase " << i;
+      EXPECT_EQ(broadPhases[i].stats().nodesVisited, broadPhases[0].stats().nodesVisited);
+      EXPECT_EQ(broadPhases[i].stats().proxiesReinserted, broadPhases[0].stats().proxiesReinserted);
+    }
+    if (frame == 0 || frame == 3) {
+      ASSERT_EQ(serial, expectedPairs(broadPhases[0], proxies)) << "frame " << frame;
+    }
+  }
 }
 
 TEST(BruteForceBroadPhase, PairsFollowTheContractInBothLoopModes) {
