@@ -64,8 +64,9 @@ int runBench(const std::vector<std::string>& args) {
        {"--solver", "", "seed|sequential_impulse",
         "physdbg's contact solver in the scene benchmarks (drop, pyramid; seed runs only it)"},
        {"--threads", "", "N",
-        "physdbg's threads in the scene benchmarks (drop, pyramid): N alone (0 every core); by "
-        "default one row on 1 thread and one on every core, each with its ratio to Bullet"},
+        "physdbg's threads in the scene benchmarks (drop, pyramid) and tree \"moving\": N alone (0 "
+        "every core); by default one row on 1 thread and one on every core, each with its ratio to "
+        "Bullet"},
        {"--collision", "", "cpu|gpu",
         "where physdbg's collision detection runs in the scene benchmarks (drop, pyramid): cpu "
         "(default) or compute shaders on the --backend context"},
