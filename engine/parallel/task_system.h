@@ -23,8 +23,10 @@ class TaskSystem {
 
   int threadCount() const { return threads_; }
 
-  // body(begin, end) over [0, count) in pieces of at least `grain` indices.
-  // Returns when every piece has run. Exceptions from a body propagate.
+  // body(begin, end) over [0, count) in pieces of at most `grain` indices
+  // (halves of halves, so more than grain / 2 each); a count up to grain runs
+  // inline on the caller's thread. Returns when every piece has run.
+  // Exceptions from a body propagate.
   void parallelFor(std::size_t count, std::size_t grain,
                    const std::function<void(std::size_t begin, std::size_t end)>& body) const;
 

@@ -21,6 +21,9 @@ namespace {
 // Where batchIslands closes a batch: enough manifolds that a thread's share
 // outweighs handing it over, few enough that a thousand boxes make several.
 constexpr std::size_t batchManifolds = 128;
+// Fewer manifolds than this in the batches that may run side by side run on
+// the stepping thread.
+constexpr std::size_t batchSplitMinimum = 2 * batchManifolds;
 
 bool touchesKinematic(const std::vector<BodyTraits>& traits, const std::vector<ContactManifold>& manifolds,
                       const ContactIsland& island) {
@@ -382,7 +385,12 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
   SolverStepReport report;
   {
     const StageTimer timer(report.islandSeconds);
-    forEach(parallel.size(), 1, [&](std::size_t k) { runBatch(bodies, movable, manifolds, batches[parallel[k]]); });
+    std::size_t parallelManifolds = 0;
+    for (std::size_t k : parallel) parallelManifolds += batches[k].manifolds.size();
+    // Batches go to other threads only when there is work enough to pay for
+    // the bodies' cache lines travelling with them.
+    const std::size_t grain = parallelManifolds < batchSplitMinimum ? parallel.size() : 1;
+    forEach(parallel.size(), grain, [&](std::size_t k) { runBatch(bodies, movable, manifolds, batches[parallel[k]]); });
     for (std::size_t i : serial) runBatch(bodies, movable, manifolds, batches[i]);
   }
   // The report in island order.
