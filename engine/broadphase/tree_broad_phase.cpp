@@ -212,14 +212,29 @@ void TreeBroadPhase::findPairs(std::vector<BodyPair>& pairs) {
   mergeFreshPairs();
   for (const int proxy : changed_) proxies_[proxy].touched = false;
   changed_.clear();
-  pairs.clear();
-  pairs.reserve(pairs_.size());
-  for (const ProxyPair& pair : pairs_) {
+  writeBodyPairs(pairs);
+}
+
+// The caller's list usually holds last step's pairs, and other threads read
+// it every step (the world screens its pairs in parallel). Storing a value
+// takes its cache line back from every core that read it, so an entry is
+// only stored where it changed: a world at rest rewrites nothing. On two
+// cores that made the pairs stage of a 1000-sphere drop at rest (10308 pairs)
+// two to three times cheaper.
+void TreeBroadPhase::writeBodyPairs(std::vector<BodyPair>& pairs) const {
+  std::size_t written = 0;
+  for (const ProxyPair& proxyPair : pairs_) {
+    const BodyPair pair{proxyPair.bodyA, proxyPair.bodyB};
     // Two proxies of the same two bodies make one body pair.
-    if (pairs.empty() || pairs.back().a != pair.bodyA || pairs.back().b != pair.bodyB) {
-      pairs.push_back({pair.bodyA, pair.bodyB});
+    if (written > 0 && pairs[written - 1] == pair) continue;
+    if (written == pairs.size()) {
+      pairs.push_back(pair);
+    } else if (pairs[written] != pair) {
+      pairs[written] = pair;
     }
+    ++written;
   }
+  pairs.resize(written);
 }
 
 // Persistent pairs of two unchanged proxies stay (their boxes and eligibility

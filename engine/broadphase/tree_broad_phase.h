@@ -62,6 +62,7 @@ class TreeBroadPhase final : public BroadPhase {
   long long queryChanged(int proxy, QueryPiece& piece) const;
   void queryAllChanged();
   void mergeFreshPairs();
+  void writeBodyPairs(std::vector<BodyPair>& pairs) const;
   void orderForLocality();
   void requireProxy(int proxy, const char* operation) const;
 
