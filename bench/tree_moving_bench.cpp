@@ -54,6 +54,7 @@ struct Variant {
   double ms = 0.0;
   double findMs = 0.0;
   long long reinserted = 0;
+  int parallelQuerySteps = 0;  // steps whose pair queries ran in parallel
 };
 
 // The same insertion method on one thread: the all-core row's scaling.
@@ -78,6 +79,10 @@ void emitVariant(const Variant& variant, std::optional<double> oneThreadMs, int 
   record["unit"] = "ms per step (update every proxy + find pairs)";
   record["margin"] = tree.options().margin;
   record["reinserted_per_step"] = static_cast<double>(variant.reinserted) / steps;
+  // Below the minimum an all-core row runs the 1-thread row's code: its
+  // scaling is then the host's noise.
+  record["parallel_query_minimum"] = TreeBroadPhase::parallelQueryMinimum;
+  record["steps_with_parallel_queries"] = variant.parallelQuerySteps;
   record["height"] = tree.height();
   record["sar"] = tree.surfaceAreaRatio();
   std::vector<std::pair<int, int>> indexPairs;
@@ -133,7 +138,11 @@ void runMoving(int count, int steps, const std::vector<int>& threadCounts, const
         }
         variant.findMs += millisecondsOf([&] { variant.broadPhase.findPairs(variant.pairs); });
       });
-      variant.reinserted += variant.broadPhase.stats().proxiesReinserted;
+      const long long reinserted = variant.broadPhase.stats().proxiesReinserted;
+      variant.reinserted += reinserted;
+      if (variant.tasks->threadCount() > 1 && reinserted >= TreeBroadPhase::parallelQueryMinimum) {
+        ++variant.parallelQuerySteps;
+      }
     }
     if (peer) peerMs += peer->step(boxes);
   }

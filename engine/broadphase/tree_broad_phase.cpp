@@ -15,14 +15,6 @@ namespace {
 // handing it to another thread costs.
 constexpr std::size_t queryPieceSize = 64;
 
-// Fewer changed proxies than this query on the caller's thread. The other
-// thread's reads pull tree nodes into its cache, and the next step's edits
-// must pull them back: on the 2-vCPU machines here (about 400 ns a cache
-// line's round trip) that cost more than the split saved below about 4000
-// queries (bench tree "moving": 8192 proxies, 1090 queries a step, 5% slower
-// on 2 threads; 32768 proxies, 4360 queries, 5% faster).
-constexpr std::size_t parallelQueryMinimum = 4096;
-
 }  // namespace
 
 TreeBroadPhase::TreeBroadPhase(const DynamicAabbTreeOptions& options, const TaskSystem* tasks)
@@ -181,7 +173,8 @@ void TreeBroadPhase::queryPiece(std::size_t begin, std::size_t end, QueryPiece& 
 // by side. The pieces are fixed by the list's length alone, and their pairs
 // are sorted afterwards, so the thread count changes nothing but the time.
 void TreeBroadPhase::queryAllChanged() {
-  const bool parallel = tasks_ != nullptr && tasks_->threadCount() > 1 && changed_.size() >= parallelQueryMinimum;
+  const bool parallel = tasks_ != nullptr && tasks_->threadCount() > 1 &&
+                        changed_.size() >= static_cast<std::size_t>(parallelQueryMinimum);
   const std::size_t pieceCount = parallel ? (changed_.size() + queryPieceSize - 1) / queryPieceSize : 1;
   if (pieces_.size() < pieceCount) pieces_.resize(pieceCount);
   if (parallel) {

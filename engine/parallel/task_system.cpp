@@ -14,11 +14,16 @@ namespace physdbg {
 // An arena caps the threads a world uses, whatever else the process runs.
 // Asked for more threads than the machine has (a determinism test running 4
 // on 2 cores), oneTBB would quietly keep its default worker count and print a
-// warning; the control raises that limit while this arena lives.
+// warning; the control raises that limit while this arena lives. oneTBB obeys
+// the smallest limit alive, so every arena sets the same one, the most
+// threads a world may ask for: a 4-thread arena beside a 2-thread one still
+// gets its 4. Workers are only made as arenas ask for them.
+constexpr std::size_t mostThreads = 256;  // the range of --threads and the scene key
+
 struct TaskSystem::Arena {
   explicit Arena(int threads)
       : limit(tbb::global_control::max_allowed_parallelism,
-              static_cast<std::size_t>(std::max(threads, TaskSystem::hardwareThreads()))),
+              std::max(mostThreads, static_cast<std::size_t>(std::max(threads, TaskSystem::hardwareThreads())))),
         arena(threads) {}
   tbb::global_control limit;
   tbb::task_arena arena;

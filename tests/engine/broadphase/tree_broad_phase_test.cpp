@@ -145,9 +145,10 @@ TEST(TreeBroadPhase, PairsEqualBruteForceOnADegenerateDeepTree) {
   EXPECT_FALSE(pairs.empty());
 }
 
-// Enough changed proxies that the queries run in parallel pieces (at least
-// 4096, tree_broad_phase.cpp): 1, 2 and 4 threads must give the same pairs
-// and the same counters every frame, and the pairs the contract asks for.
+// Enough changed proxies that the queries run in parallel pieces
+// (parallelQueryMinimum): 1, 2 and 4 threads must give the same pairs and
+// the same counters every frame, and the pairs the contract asks for. Each
+// frame also removes and re-adds proxies, and some bodies have two.
 TEST(TreeBroadPhase, ThreadsGiveTheSamePairsAndCounters) {
   TaskSystem two(2), four(4);
   std::vector<TreeBroadPhase> broadPhases;
@@ -155,11 +156,11 @@ TEST(TreeBroadPhase, ThreadsGiveTheSamePairsAndCounters) {
   broadPhases.emplace_back();
   broadPhases.emplace_back(DynamicAabbTreeOptions{}, &two);
   broadPhases.emplace_back(DynamicAabbTreeOptions{}, &four);
+  const int count = TreeBroadPhase::parallelQueryMinimum + 2000;
   std::mt19937 random(23);
   std::map<int, ProxyRecord> proxies;
-  for (std::uint32_t body = 0; body < 6000; ++body) {
+  const auto add = [&](std::uint32_t body, ProxyMotion motion) {
     const Aabb box = randomBox(random, 30.0, 0.8);
-    const ProxyMotion motion = body % 7 == 0 ? ProxyMotion::Static : ProxyMotion::Dynamic;
     int proxy = -1;
     for (TreeBroadPhase& broadPhase : broadPhases) {
       const int id = broadPhase.addProxy(box, body, motion);
@@ -167,6 +168,11 @@ TEST(TreeBroadPhase, ThreadsGiveTheSamePairsAndCounters) {
       proxy = id;
     }
     proxies[proxy] = {box, body, motion};
+  };
+  for (int body = 0; body < count; ++body) {
+    const ProxyMotion motion = body % 7 == 0 ? ProxyMotion::Static : ProxyMotion::Dynamic;
+    add(static_cast<std::uint32_t>(body), motion);
+    if (body % 50 == 0) add(static_cast<std::uint32_t>(body), motion);  // a second proxy of the same body
   }
   std::normal_distribution<double> step(0.0, 0.3);
   for (int frame = 0; frame < 4; ++frame) {
@@ -181,10 +187,19 @@ TEST(TreeBroadPhase, ThreadsGiveTheSamePairsAndCounters) {
         record.box = {record.box.min + displacement, record.box.max + displacement};
         for (TreeBroadPhase& broadPhase : broadPhases) broadPhase.moveProxy(proxy, record.box, displacement);
       }
+      for (int change = 0; change < 20; ++change) {
+        auto it = proxies.begin();
+        std::advance(it, random() % proxies.size());
+        const auto [body, motion] = std::pair{it->second.body, it->second.motion};
+        for (TreeBroadPhase& broadPhase : broadPhases) broadPhase.removeProxy(it->first);
+        proxies.erase(it);
+        add(body, motion);
+      }
     }
     std::vector<BodyPair> serial, parallel;
     broadPhases[0].findPairs(serial);
-    ASSERT_GE(broadPhases[0].stats().proxiesReinserted, frame == 0 ? 0 : 4096) << "too few queries to split";
+    ASSERT_GE(broadPhases[0].stats().proxiesReinserted, frame == 0 ? 0 : TreeBroadPhase::parallelQueryMinimum)
+        << "too few queries to split";
     for (std::size_t i = 1; i < broadPhases.size(); ++i) {
       broadPhases[i].findPairs(parallel);
       ASSERT_EQ(parallel, serial) << "frame " << frame << ", broad phase " << i;
