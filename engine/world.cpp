@@ -20,7 +20,7 @@ namespace {
 // several us here, and the bodies' cache lines follow the piece). Screening
 // a pair is 10-20 ns; a near pair runs the narrow phase, 0.05 us for two
 // spheres to several us for GJK and EPA; a body's prediction is ~0.1 us.
-// Small scenes therefore step on the calling thread alone.
+// A small scene's pair loops therefore stay on the calling thread.
 constexpr std::size_t pairGrain = 1024;
 constexpr std::size_t nearPairGrain = 128;
 constexpr std::size_t bodyGrain = 256;

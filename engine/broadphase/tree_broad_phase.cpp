@@ -186,11 +186,14 @@ void TreeBroadPhase::queryAllChanged() {
   } else {
     queryPiece(0, changed_.size(), pieces_[0]);
   }
+  for (std::size_t piece = 0; piece < pieceCount; ++piece) stats_.nodesVisited += pieces_[piece].boxesTested;
+  if (pieceCount == 1) {
+    fresh_.swap(pieces_[0].pairs);  // the buffers trade places, keeping both capacities
+    return;
+  }
   fresh_.clear();
-  if (pieceCount == 1) fresh_.swap(pieces_[0].pairs);  // the buffers trade places, keeping both capacities
   for (std::size_t piece = 0; piece < pieceCount; ++piece) {
-    stats_.nodesVisited += pieces_[piece].boxesTested;
-    if (pieceCount > 1) fresh_.insert(fresh_.end(), pieces_[piece].pairs.begin(), pieces_[piece].pairs.end());
+    fresh_.insert(fresh_.end(), pieces_[piece].pairs.begin(), pieces_[piece].pairs.end());
   }
 }
 
