@@ -20,5 +20,10 @@ inline constexpr long long maxImagePixels = 8192LL * 8192;
 inline constexpr int maxTreeEvents = 10'000;
 // Bodies --highlight takes: each gets an overlay line, so a screenful.
 inline constexpr int maxHighlighted = 16;
+// contacts --max-separation: metres, and the box pairs it may make the narrow
+// phase test (each holds a result of about 100 bytes; a dense pile of
+// 100,000 bodies touches in under a million).
+inline constexpr double maxSeparation = 1e6;
+inline constexpr long long maxSeparationPairs = 4'000'000;
 
 }  // namespace physdbg::cli::limits

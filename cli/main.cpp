@@ -18,7 +18,7 @@ const std::vector<Subcommand>& subcommands() {
       {"scenes", "list the built-in scenes", physdbg::cli::runScenes},
       {"simulate", "run a scene without rendering; summary, CSV trace, state hash", physdbg::cli::runSimulate},
       {"render", "simulate a scene and write a PNG frame sequence (and an MP4)", physdbg::cli::runRender},
-      {"contacts", "every contact of a scene's initial state: normal, depth, points (JSON)",
+      {"contacts", "every contact of a scene's initial state or of any step: normal, depth, points (JSON)",
        physdbg::cli::runContacts},
       {"tree", "frame pairs before/after each tree rotation, hierarchy diagram, SAR/height plot",
        physdbg::cli::runTree},

@@ -124,7 +124,10 @@ void World::step() {
   findContacts(context);  // candidate pairs, then the narrow phase on each
   // A body woken by a touch had no pairs with what else it rests on (asleep,
   // its proxy made none): find them before solving, or it would fall a step.
-  while (wakeTouchedBodies()) findContacts(context);
+  while (wakeTouchedBodies(context)) findContacts(context);
+  // After the last pass: a second pass must find what the first found (the
+  // last step's answers), or a wake would change pairs it never touched.
+  keepAnswers();
   solveContacts(context);  // responses, then positions
   const StageTimer timer(profile.afterSolve);
   moveKinematicBodies(context);
@@ -160,6 +163,17 @@ void World::putToSleep(BodyId id) {
   broadPhase_->setProxyActive(proxies_[id], false);
 }
 
+void World::sleep(BodyId id) {
+  if (id >= bodies_.size()) throw std::invalid_argument("no body " + std::to_string(id));
+  if (!bodies_[id].isDynamic())
+    throw std::invalid_argument("body " + std::to_string(id) + " is static or kinematic: only a dynamic body sleeps");
+  if (!takesPart(id))
+    throw std::invalid_argument("body " + std::to_string(id) + " is absent or frozen: it cannot sleep");
+  if (asleep_[id]) return;
+  island_[id] = id;  // alone: waking it wakes no other body
+  putToSleep(id);
+}
+
 bool World::isMoving(BodyId id) const {
   // The flags first: a sleeping world asks this of every resting contact
   // each step, and the flags spare it a load of each body.
@@ -181,9 +195,26 @@ void World::scheduleForce(const ScheduledForce& force) {
   scheduledForces_.push_back(force);
 }
 
+void World::scheduleState(const ScheduledState& state) {
+  if (state.body >= bodies_.size()) throw std::invalid_argument("no body " + std::to_string(state.body));
+  if (bodies_[state.body].isStatic())
+    throw std::invalid_argument("body " + std::to_string(state.body) + " is static: its state cannot be set");
+  if (!state.position && !state.orientation && !state.linearVelocity && !state.angularVelocity)
+    throw std::invalid_argument("nothing to set: give a position, orientation, velocity or angular velocity");
+  const auto finite = [](const std::optional<Vec3>& v) { return !v || isFinite(*v); };
+  if (!finite(state.position) || !finite(state.linearVelocity) || !finite(state.angularVelocity) ||
+      (state.orientation && !isFinite(*state.orientation)))
+    throw std::invalid_argument("state values must be finite");
+  if (state.orientation && !(state.orientation->norm() >= 1e-12))
+    throw std::invalid_argument("orientation is a zero quaternion");
+  if (state.step < stepCount_) throw std::invalid_argument("step " + std::to_string(state.step) + " has passed");
+  scheduledStates_.push_back(state);
+}
+
 // Wakes come first: a pushed body wakes its whole island, bodies before it
 // in id order included, and each of them must then begin the step awake.
 void World::applyForces() {
+  applyScheduledStates();
   applyScheduledForces();
   wakePushedBodies();
   // Each awake body's forces become its step's accelerations on its own, in parallel.
@@ -211,6 +242,24 @@ void World::applyScheduledForces() {
     if (force.isTorque) body.addTorque(force.vector, force.mode);
     else if (force.at) body.addForceAtPoint(force.vector, *force.at, force.mode);
     else body.addForce(force.vector, force.mode);
+  }
+}
+
+// Before the forces, so a force of the same step acts on the new state; in
+// the order scheduled, so of two changes to one part the later wins. A body
+// put somewhere else takes its broad-phase box along (a still kinematic body
+// would not move it).
+void World::applyScheduledStates() {
+  for (const ScheduledState& state : scheduledStates_) {
+    if (state.step != stepCount_ || !takesPart(state.body)) continue;
+    RigidBody& body = bodies_[state.body];
+    if (state.position) body.setPosition(*state.position);
+    if (state.orientation) body.setOrientation(*state.orientation);
+    if (state.linearVelocity) body.setLinearVelocity(*state.linearVelocity);
+    if (state.angularVelocity) body.setAngularVelocity(*state.angularVelocity);
+    wake(state.body);
+    if (state.position || state.orientation)
+      broadPhase_->moveProxy(proxies_[state.body], body.collider().worldBounds(body.transform()), Vec3::Zero());
   }
 }
 
@@ -408,7 +457,6 @@ void World::gatherContacts(const StepContext& context) {
     contacts_.push_back(contact);
   }
   stats_.manifoldPoints += solver_->addCandidates(candidates_, reaches_, bodies_, context, manifoldSources_);
-  keepAnswers();
 }
 
 // The answers worth taking again next pass: this pass's manifolds (in pair
@@ -475,20 +523,47 @@ World::StaticRowCounts World::testStaticRow(BodyId i) const {
 }
 
 // A sleeping body touched by an awake one wakes before the response, so the
-// response sees it as the dynamic body it is.
-bool World::wakeTouchedBodies() {
+// response sees it as the dynamic body it is: touching now (the narrow
+// phase's contacts), or reached within this step by a speculative contact
+// (closesOnSleeper). Left asleep, it would be a wall for the step: a ball
+// rolling into a sleeper bounced back off it instead of passing it its
+// momentum.
+bool World::wakeTouchedBodies(const StepContext& context) {
   bool woke = false;
+  const auto wakeIfTouched = [&](BodyId sleeper, BodyId other, bool touches) {
+    if (!asleep_[sleeper] || !isMoving(other) || !touches) return;
+    wake(sleeper);
+    woke = true;
+  };
   for (const Contact& contact : contacts_) {
-    if (asleep_[contact.a] && isMoving(contact.b)) {
-      wake(contact.a);
-      woke = true;
-    }
-    if (asleep_[contact.b] && isMoving(contact.a)) {
-      wake(contact.b);
-      woke = true;
-    }
+    wakeIfTouched(contact.a, contact.b, true);
+    wakeIfTouched(contact.b, contact.a, true);
+  }
+  for (const ContactManifold& manifold : solver_->manifolds()) {
+    if (asleep_[manifold.a] == asleep_[manifold.b]) continue;
+    const BodyId sleeper = asleep_[manifold.a] ? manifold.a : manifold.b;
+    const BodyId other = sleeper == manifold.a ? manifold.b : manifold.a;
+    if (asleep_[sleeper] && isMoving(other)) wakeIfTouched(sleeper, other, closesOnSleeper(manifold, other, context));
   }
   return woke;
+}
+
+// Whether the moving body of a manifold with a sleeper can close any of its
+// points' gaps this step: its speed at the point towards the sleeper, plus
+// what its forces add in the step, over the step, reaches the gap.
+bool World::closesOnSleeper(const ContactManifold& manifold, BodyId mover, const StepContext& context) const {
+  const RigidBody& body = bodies_[mover];
+  // The normal points from a to b; towards the sleeper is -normal for b.
+  const Vec3 towards = mover == manifold.a ? manifold.normal : Vec3(-manifold.normal);
+  const double gain = body.stepAcceleration().norm() * context.dt;
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    const ManifoldPoint& point = manifold.points[p];
+    const Vec3 at = mover == manifold.a ? point.pointA : point.pointB;
+    const Vec3 velocity = body.linearVelocity() + body.angularVelocity().cross(at - body.position());
+    const double closing = std::max(0.0, velocity.dot(towards)) + gain;
+    if (closing * context.dt >= point.separation - solver_->touchingGap()) return true;
+  }
+  return false;
 }
 
 void World::solveContacts(const StepContext& context) {

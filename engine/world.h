@@ -84,6 +84,20 @@ struct ScheduledForce {
   int firstStep = 0, endStep = 1;
 };
 
+// A change of one body's state when step `step` begins (step 0 is the first),
+// as ScheduledForce's firstStep: the world after `step` steps is replaced by
+// it, before forces and gravity act. Each given part replaces the body's
+// own; at least one must be given. A sleeping body that is set wakes with its
+// island; a kinematic body may be set (it then moves with the new values).
+struct ScheduledState {
+  BodyId body = 0;
+  int step = 0;
+  std::optional<Vec3> position;  // m, the centre of mass
+  std::optional<Quat> orientation;  // normalised when applied; not zero
+  std::optional<Vec3> linearVelocity;   // m/s
+  std::optional<Vec3> angularVelocity;  // rad/s, world frame
+};
+
 // When a body takes part in the run: in the states s (the world after s
 // steps) with addAtStep <= s < removeAtStep. Ids never change, so a body
 // added later keeps the id (the scene index) it was created with.
@@ -148,6 +162,10 @@ class World {
   // Throws std::invalid_argument for an unknown, static or kinematic body, a
   // torque with a point, non-finite vectors or an empty step range.
   void scheduleForce(const ScheduledForce& force);
+  // Throws std::invalid_argument for an unknown or static body, nothing to
+  // set, non-finite values, a zero orientation or a step the run has passed.
+  // Changes scheduled for the same step apply in the order scheduled.
+  void scheduleState(const ScheduledState& state);
 
   // Takes the body out of the run, keeping its id and state: its proxy leaves
   // the broad phase, its touching pairs end now (`end` events), the bodies
@@ -166,6 +184,13 @@ class World {
   void setContactListener(ContactListener* listener) { listener_ = listener; }
 
   bool isAsleep(BodyId id) const { return asleep_.at(id); }
+  // Puts a dynamic body to sleep now, before the first step or between
+  // steps, alone in its island and with its velocities zeroed: it stays where
+  // it is, untouched by gravity, until something wakes it as any sleeping
+  // body (a moving body's touch, a force, a velocity, a scheduled state,
+  // wake()). Throws std::invalid_argument for an unknown, static, kinematic,
+  // absent or frozen body.
+  void sleep(BodyId id);
   // Wakes the body and every body of the island it fell asleep with.
   void wake(BodyId id);
   // The lowest id of the body's island: awake bodies linked by the last
@@ -215,6 +240,7 @@ class World {
  private:
   void applyForces();
   void applyScheduledForces();
+  void applyScheduledStates();
   void wakePushedBodies();
   void moveKinematicBodies(const StepContext& context);
   const std::vector<bool>& movableBodies();
@@ -254,7 +280,8 @@ class World {
     NarrowPhaseCounters narrowPhase;
   };
   StaticRowCounts testStaticRow(BodyId id) const;
-  bool wakeTouchedBodies();  // true when a body woke
+  bool wakeTouchedBodies(const StepContext& context);  // true when a body woke
+  bool closesOnSleeper(const ContactManifold& manifold, BodyId mover, const StepContext& context) const;
   void solveContacts(const StepContext& context);
   std::vector<BodyPair> dormantPairs() const;
   std::vector<ShownContact> initialContacts() const;
@@ -325,6 +352,7 @@ class World {
   std::vector<ShownContact> resting_;  // sorted; what sleeping bodies rest on
   ContactListener* listener_ = nullptr;
   std::vector<ScheduledForce> scheduledForces_;
+  std::vector<ScheduledState> scheduledStates_;
   std::vector<BodyLifetime> lifetimes_;
   std::vector<NumericalFault> faults_;
   StepStats stats_;

@@ -299,7 +299,8 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
   if (layers.has(dd::Layer::Pairs))
     emit(dd::tagOf(dd::Layer::Pairs), [&] {
       for (const BodyPair& pair : pairs_) {
-        if (!present_[pair.a] || !present_[pair.b]) continue;  // found before a removal
+        // Found before a removal, or before a body was frozen (its position may be NaN).
+        if (!present_[pair.a] || !present_[pair.b] || frozen_[pair.a] || frozen_[pair.b]) continue;
         frame.lines.push_back({bodies_[pair.a].position(), bodies_[pair.b].position(), {0.9f, 0.5f, 0.9f, 1},
                                dd::tagOf(dd::Layer::Pairs, static_cast<int>(pair.a), static_cast<int>(pair.b))});
       }

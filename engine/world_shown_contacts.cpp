@@ -9,11 +9,14 @@
 namespace physdbg {
 // A body removed after it touched leaves nothing behind: the frame shows the
 // world as it is, and a dot on a body that is not drawn would explain nothing.
+// Nor does a body frozen for a non-finite state: the step that broke it may
+// have left NaN in its contacts (a recording holds no NaN).
 std::vector<ShownContact> World::shownContacts() const {
   if (stepCount_ == 0) return mergeContacts(initialContacts(), resting_);
   std::vector<ShownContact> points =
       mergeContacts(keepHistory_ ? history_.points() : solver_->touchedPoints(contacts_), resting_);
-  std::erase_if(points, [this](const ShownContact& point) { return !present_[point.pair.a] || !present_[point.pair.b]; });
+  const auto shown = [this](BodyId id) { return present_[id] && !frozen_[id]; };
+  std::erase_if(points, [&](const ShownContact& point) { return !shown(point.pair.a) || !shown(point.pair.b); });
   return points;
 }
 

@@ -28,12 +28,6 @@ std::string shown(const json& value) {
   return excerpt(value.dump());
 }
 
-std::string formatNumber(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
-
 // 1-based line of a byte offset, for messages about the raw text.
 std::size_t lineOf(const std::string& text, std::size_t offset) {
   std::size_t line = 1;
@@ -61,6 +55,12 @@ std::size_t tooDeepAt(const std::string& text) {
 }
 
 }  // namespace
+
+std::string formatNumber(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
 
 std::string excerpt(const std::string& text) {
   const std::size_t limit = scene_limits::maxEchoedChars;

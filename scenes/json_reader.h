@@ -17,6 +17,8 @@ namespace physdbg {
 
 // "abc" for short texts, "abcd... (50000000 bytes)" for long ones.
 std::string excerpt(const std::string& text);
+// A number as messages show it (ostream's default: "1e+09", "0.5").
+std::string formatNumber(double value);
 
 // Parses JSON text after checking what a parser would not: its size, NUL
 // bytes and nesting depth (deep nesting overflows recursive consumers).

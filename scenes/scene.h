@@ -42,6 +42,8 @@ struct SceneDescription {
   std::vector<BodyDefinition> bodies;
   std::vector<ScheduledForce> forces;  // body indices are world body ids (after `repeat`)
   std::vector<BodyLifetime> lifetimes;  // bodies added or removed during the run (world ids)
+  std::vector<BodyId> sleeping;         // bodies that start asleep ("asleep": true; world ids)
+  std::vector<ScheduledState> states;   // "set": state changes during the run (world ids)
   std::optional<SceneCamera> camera;
   std::optional<std::string> layers;  // the scene's default debug layers
 };

@@ -15,6 +15,7 @@ inline constexpr std::size_t maxBodyNameLength = 64;  // a body's "name": a labe
 inline constexpr std::size_t maxHullPoints = 100'000;       // per convex shape
 inline constexpr long long maxSteps = 10'000'000;
 inline constexpr std::size_t maxForces = 10'000;  // "forces" entries: each is looked at every step
+inline constexpr std::size_t maxStates = 10'000;  // "set" entries: each is looked at every step
 // "threads": each is a oneTBB worker with its own stack; more than a big
 // machine has only costs memory (the result is the same for any count).
 inline constexpr int maxThreads = 256;

@@ -82,13 +82,10 @@ void readBodyKeys(const JsonReader& reader, const json& value, const std::string
   if (value.contains("velocity")) body.linearVelocity = reader.vec3(value["velocity"], key("velocity"));
   if (value.contains("angular_velocity"))
     body.angularVelocity = reader.vec3(value["angular_velocity"], key("angular_velocity"));
-  if (value.contains("mass")) body.mass = reader.size(value["mass"], key("mass"));
   if (value.contains("static")) body.isStatic = reader.boolean(value["static"], key("static"));
   if (value.contains("kinematic")) {
     body.isKinematic = reader.boolean(value["kinematic"], key("kinematic"));
     if (body.isKinematic && body.isStatic) reader.fail(key("kinematic"), "a body cannot be both static and kinematic");
-    if (body.isKinematic && value.contains("mass"))
-      reader.fail(key("mass"), "a kinematic body has no mass: it moves with its velocities and pushes, unpushed");
   }
   if (value.contains("restitution"))
     body.material.restitution = reader.inRange(value["restitution"], key("restitution"), 0.0, 1.0);
@@ -102,6 +99,75 @@ void readBodyKeys(const JsonReader& reader, const json& value, const std::string
   if (value.contains("lock_translation"))
     body.lockTranslation = reader.bool3(value["lock_translation"], key("lock_translation"));
   if (value.contains("lock_rotation")) body.lockRotation = reader.bool3(value["lock_rotation"], key("lock_rotation"));
+}
+
+// "density" in kg/m^3 gives the mass of the shape's volume, within the mass's bounds.
+double massFromDensity(const JsonReader& reader, const json& value, const std::string& path, const Collider& shape) {
+  const double density = reader.size(value, path);
+  const double volume = shape.volume();
+  const double mass = density * volume;
+  if (!(mass >= limits::minSize && mass <= limits::maxMagnitude))
+    reader.fail(path, "gives a mass of " + formatNumber(mass) + " kg (" + formatNumber(density) +
+                          " kg/m^3 times the shape's volume, " + formatNumber(volume) + " m^3); a mass must be " +
+                          formatNumber(limits::minSize) + " to " + formatNumber(limits::maxMagnitude) + " kg");
+  return mass;
+}
+
+// [ixx, iyy, izz] (principal moments about the body axes) or a 3x3 array,
+// kg m^2 about the centre of mass; inertiaTensorProblem says what is wrong.
+Mat3 readInertia(const JsonReader& reader, const json& value, const std::string& path) {
+  const json& rows = reader.array(value, path, 3);
+  Mat3 inertia = Mat3::Zero();
+  const bool matrix = rows[0].is_array();
+  for (int i = 0; i < 3; ++i) {
+    const std::string row = path + "[" + std::to_string(i) + "]";
+    if (!matrix) {
+      inertia(i, i) = reader.number(rows[i], row);
+      if (!(inertia(i, i) > 0.0)) reader.fail(row, "must be positive, got " + formatNumber(inertia(i, i)));
+      continue;
+    }
+    reader.array(rows[i], row, 3);
+    for (int j = 0; j < 3; ++j) inertia(i, j) = reader.number(rows[i][j], row + "[" + std::to_string(j) + "]");
+  }
+  const std::string problem = inertiaTensorProblem(inertia);
+  if (!problem.empty()) reader.fail(path, problem);
+  return inertia;
+}
+
+// "mass" or "density", and "inertia", once static and kinematic are known.
+// A static body ignores a mass or density (infinite); a kinematic body
+// refuses them, and neither takes an inertia.
+void readMassKeys(const JsonReader& reader, const json& value, const std::string& path, BodyDefinition& body) {
+  const auto key = [&](const char* name) { return path + "." + name; };
+  if (value.contains("mass") && value.contains("density"))
+    reader.fail(path,
+                "has both mass and density: give one (the mass of a density is density times the shape's volume)");
+  if (value.contains("mass")) body.mass = reader.size(value["mass"], key("mass"));
+  if (value.contains("density")) body.mass = massFromDensity(reader, value["density"], key("density"), *body.collider);
+  for (const char* name : {"mass", "density"})
+    if (body.isKinematic && value.contains(name))
+      reader.fail(key(name), "a kinematic body has no mass: it moves with its velocities and pushes, unpushed");
+  if (!value.contains("inertia")) return;
+  if (body.isStatic || body.isKinematic)
+    reader.fail(key("inertia"), std::string("a ") + (body.isStatic ? "static" : "kinematic") +
+                                    " body has no inertia: nothing turns it");
+  body.localInertia = readInertia(reader, value["inertia"], key("inertia"));
+}
+
+// "asleep": true starts a dynamic body asleep (World::sleep): still, so
+// without a velocity, and in the run from the start.
+bool readAsleep(const JsonReader& reader, const json& value, const std::string& path, const BodyDefinition& body,
+                const std::optional<BodyLifetime>& lifetime) {
+  if (!value.contains("asleep") || !reader.boolean(value["asleep"], path + ".asleep")) return false;
+  if (body.isStatic || body.isKinematic)
+    reader.fail(path + ".asleep", std::string("a ") + (body.isStatic ? "static" : "kinematic") +
+                                      " body never sleeps; only a dynamic one can");
+  if (body.linearVelocity != Vec3::Zero() || body.angularVelocity != Vec3::Zero())
+    reader.fail(path + ".asleep",
+                "a sleeping body is still: it cannot have a velocity or angular_velocity (one wakes it)");
+  if (lifetime && lifetime->addAtStep > 0)
+    reader.fail(path + ".asleep", "a body that joins the run later (add_at_step) joins it awake");
+  return true;
 }
 
 // One body entry may expand to a grid of bodies ("repeat"): x varies fastest,
@@ -174,13 +240,16 @@ void readBody(const JsonReader& reader, const json& value, std::size_t entry, Sc
   reader.checkKeys(value, path,
                    {"name", "shape", "position", "orientation", "velocity", "angular_velocity", "mass", "static",
                     "restitution", "static_friction", "dynamic_friction", "drag", "angular_drag", "use_gravity",
-                    "lock_translation", "lock_rotation", "repeat", "kinematic", "add_at_step", "remove_at_step"});
+                    "lock_translation", "lock_rotation", "repeat", "kinematic", "add_at_step", "remove_at_step",
+                    "density", "inertia", "asleep"});
   BodyDefinition body;
   body.collider = readShape(reader, reader.required(value, path, "shape"), path + ".shape");
   readBodyKeys(reader, value, path, body);
+  readMassKeys(reader, value, path, body);
   body = aboutCentreOfMass(body);  // the scene states the body where its centre of mass is
   const std::string name = value.contains("name") ? readBodyName(reader, value["name"], path + ".name") : "";
   const std::optional<BodyLifetime> lifetime = readLifetime(reader, value, path);
+  const bool asleep = readAsleep(reader, value, path, body, lifetime);
   const std::size_t first = scene.bodies.size();
   if (value.contains("repeat")) {
     expandRepeat(reader, value["repeat"], path + ".repeat", body, entry, name, scene);
@@ -189,6 +258,8 @@ void readBody(const JsonReader& reader, const json& value, std::size_t entry, Sc
       reader.fail(path, "makes more than " + std::to_string(limits::maxBodies) + " bodies in the scene");
     addBody(body, entry, name, scene);
   }
+  for (std::size_t id = first; asleep && id < scene.bodies.size(); ++id)
+    scene.sleeping.push_back(static_cast<BodyId>(id));
   if (!lifetime) return;
   for (std::size_t id = first; id < scene.bodies.size(); ++id) {
     scene.lifetimes.push_back(*lifetime);
@@ -337,6 +408,14 @@ ForceMode readForceMode(const JsonReader& reader, const json& value, const std::
                                 {"velocity_change", ForceMode::VelocityChange}});
 }
 
+// An entry's "body": an index into the scene's bodies after `repeat`.
+BodyId readBodyIndex(const JsonReader& reader, const json& value, const std::string& path,
+                     const SceneDescription& scene) {
+  const long long bodies = static_cast<long long>(scene.bodies.size());
+  if (bodies == 0) reader.fail(path + ".body", "the scene has no bodies");
+  return static_cast<BodyId>(reader.integer(reader.required(value, path, "body"), path + ".body", 0, bodies - 1));
+}
+
 // {"body": I, "force" | "torque": [x,y,z], "mode", "at", "steps": [A, B]}:
 // the body must exist (after `repeat`) and be dynamic.
 ScheduledForce readForce(const JsonReader& reader, const json& value, const std::string& path,
@@ -344,9 +423,7 @@ ScheduledForce readForce(const JsonReader& reader, const json& value, const std:
   reader.requireObject(value, path);
   reader.checkKeys(value, path, {"body", "force", "torque", "mode", "at", "steps"});
   ScheduledForce force;
-  const long long bodies = static_cast<long long>(scene.bodies.size());
-  if (bodies == 0) reader.fail(path + ".body", "the scene has no bodies");
-  force.body = static_cast<BodyId>(reader.integer(reader.required(value, path, "body"), path + ".body", 0, bodies - 1));
+  force.body = readBodyIndex(reader, value, path, scene);
   const BodyDefinition& body = scene.bodies[force.body];
   if (body.isStatic || body.isKinematic)
     reader.fail(path + ".body", "body " + std::to_string(force.body) + " is " +
@@ -369,13 +446,39 @@ ScheduledForce readForce(const JsonReader& reader, const json& value, const std:
   return force;
 }
 
-void readForces(const JsonReader& reader, const json& value, SceneDescription& scene) {
-  const json& forces = reader.array(value, "forces", 0);
-  if (forces.size() > limits::maxForces)
-    reader.fail("forces", "has " + std::to_string(forces.size()) + " entries (at most " +
-                              std::to_string(limits::maxForces) + ")");
-  for (std::size_t i = 0; i < forces.size(); ++i)
-    scene.forces.push_back(readForce(reader, forces[i], "forces[" + std::to_string(i) + "]", scene));
+// A top-level list of at most `most` entries ("forces", "set"), each read by
+// `read(reader, entry, "key[i]", scene)` after the bodies.
+template <typename Entry>
+void readEntries(const JsonReader& reader, const json& value, const std::string& key, std::size_t most,
+                 Entry (*read)(const JsonReader&, const json&, const std::string&, const SceneDescription&),
+                 const SceneDescription& scene, std::vector<Entry>& entries) {
+  const json& list = reader.array(value, key, 0);
+  if (list.size() > most)
+    reader.fail(key, "has " + std::to_string(list.size()) + " entries (at most " + std::to_string(most) + ")");
+  for (std::size_t i = 0; i < list.size(); ++i)
+    entries.push_back(read(reader, list[i], key + "[" + std::to_string(i) + "]", scene));
+}
+
+// {"body": I, "step": N, "position", "orientation", "velocity",
+// "angular_velocity"}: at least one of the four, for a body that is not static.
+ScheduledState readState(const JsonReader& reader, const json& value, const std::string& path,
+                         const SceneDescription& scene) {
+  reader.requireObject(value, path);
+  reader.checkKeys(value, path, {"body", "step", "position", "orientation", "velocity", "angular_velocity"});
+  ScheduledState state;
+  state.body = readBodyIndex(reader, value, path, scene);
+  if (scene.bodies[state.body].isStatic)
+    reader.fail(path + ".body", "body " + std::to_string(state.body) + " is static: its state cannot be set");
+  state.step =
+      static_cast<int>(reader.integer(reader.required(value, path, "step"), path + ".step", 0, limits::maxSteps - 1));
+  if (value.contains("position")) state.position = reader.vec3(value["position"], path + ".position");
+  if (value.contains("orientation")) state.orientation = reader.quaternion(value["orientation"], path + ".orientation");
+  if (value.contains("velocity")) state.linearVelocity = reader.vec3(value["velocity"], path + ".velocity");
+  if (value.contains("angular_velocity"))
+    state.angularVelocity = reader.vec3(value["angular_velocity"], path + ".angular_velocity");
+  if (!state.position && !state.orientation && !state.linearVelocity && !state.angularVelocity)
+    reader.fail(path, "needs at least one of position, orientation, velocity and angular_velocity");
+  return state;
 }
 
 }  // namespace
@@ -384,9 +487,10 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
   const JsonReader reader(sourceName);
   const json root = parseBoundedJson(jsonText, sourceName);
   reader.requireObject(root, "");
-  reader.checkKeys(root, "", {"name", "description", "gravity", "dt", "steps", "bodies", "camera", "layers",
-                              "allow_sleep", "threads", "broadphase", "collision", "solver", "restitution_combine",
-                              "friction_combine", "forces"});
+  reader.checkKeys(
+      root, "",
+      {"name", "description", "gravity", "dt", "steps", "bodies", "camera", "layers", "allow_sleep", "threads",
+       "broadphase", "collision", "solver", "restitution_combine", "friction_combine", "forces", "set"});
   SceneDescription scene;
   scene.source = sourceName;
   scene.name = std::filesystem::path(sourceName).stem().string();
@@ -404,7 +508,9 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
   }
   const json& bodies = reader.array(reader.required(root, "", "bodies"), "bodies", 0);
   for (std::size_t i = 0; i < bodies.size(); ++i) readBody(reader, bodies[i], i, scene);
-  if (root.contains("forces")) readForces(reader, root["forces"], scene);
+  if (root.contains("forces"))
+    readEntries(reader, root["forces"], "forces", limits::maxForces, readForce, scene, scene.forces);
+  if (root.contains("set")) readEntries(reader, root["set"], "set", limits::maxStates, readState, scene, scene.states);
   return scene;
 }
 
@@ -428,36 +534,31 @@ SceneDescription loadSceneFile(const std::string& path) {
 // rejects is reported against the file and the entry it came from.
 World buildWorld(const SceneDescription& scene, std::shared_ptr<CollisionOffload> offload) {
   const std::string source = scene.source.empty() ? "scene " + scene.name : scene.source;
+  // Runs `call`; a refusal names the file and what `where()` says.
+  const auto named = [&](const auto& where, const auto& call) {
+    try {
+      call();
+    } catch (const std::invalid_argument& error) {
+      throw SceneError(source + ": " + where() + ": " + error.what());
+    }
+  };
+  // "bodies[3] (body 17)", or "body 17" for a built-in scene.
+  const auto bodyWhere = [&](std::size_t i) {
+    if (i >= scene.bodyEntries.size()) return "body " + std::to_string(i);
+    return "bodies[" + std::to_string(scene.bodyEntries[i]) + "] (body " + std::to_string(i) + ")";
+  };
+  const auto entry = [](const char* list, std::size_t i) { return std::string(list) + "[" + std::to_string(i) + "]"; };
   std::optional<World> world;
-  try {
-    world.emplace(scene.world, std::move(offload));
-  } catch (const std::invalid_argument& error) {
-    throw SceneError(source + ": world settings: " + error.what());
-  }
-  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-    try {
-      world->addBody(scene.bodies[i]);
-    } catch (const std::invalid_argument& error) {
-      std::string where = "body " + std::to_string(i);
-      if (i < scene.bodyEntries.size())
-        where = "bodies[" + std::to_string(scene.bodyEntries[i]) + "] (body " + std::to_string(i) + ")";
-      throw SceneError(source + ": " + where + ": " + error.what());
-    }
-  }
-  for (std::size_t i = 0; i < scene.forces.size(); ++i) {
-    try {
-      world->scheduleForce(scene.forces[i]);
-    } catch (const std::invalid_argument& error) {
-      throw SceneError(source + ": forces[" + std::to_string(i) + "]: " + error.what());
-    }
-  }
-  for (const BodyLifetime& lifetime : scene.lifetimes) {
-    try {
-      world->scheduleLifetime(lifetime);
-    } catch (const std::invalid_argument& error) {
-      throw SceneError(source + ": body " + std::to_string(lifetime.body) + ": " + error.what());
-    }
-  }
+  named([] { return std::string("world settings"); }, [&] { world.emplace(scene.world, std::move(offload)); });
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    named([&] { return bodyWhere(i); }, [&] { world->addBody(scene.bodies[i]); });
+  for (const BodyId id : scene.sleeping) named([&] { return bodyWhere(id) + ": asleep"; }, [&] { world->sleep(id); });
+  for (std::size_t i = 0; i < scene.forces.size(); ++i)
+    named([&] { return entry("forces", i); }, [&] { world->scheduleForce(scene.forces[i]); });
+  for (std::size_t i = 0; i < scene.states.size(); ++i)
+    named([&] { return entry("set", i); }, [&] { world->scheduleState(scene.states[i]); });
+  for (const BodyLifetime& lifetime : scene.lifetimes)
+    named([&] { return "body " + std::to_string(lifetime.body); }, [&] { world->scheduleLifetime(lifetime); });
   return std::move(*world);
 }
 

@@ -5,6 +5,8 @@
 // body's motion with them (motion.h) and writes it back.
 #include <array>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "engine/colliders/collider.h"
 #include "engine/dynamics/material.h"
@@ -37,6 +39,11 @@ struct BodyDefinition {
   Material material;
   std::array<bool, 3> lockTranslation{false, false, false};  // world axes
   std::array<bool, 3> lockRotation{false, false, false};     // world axes
+  // Inertia tensor in kg m^2 about the centre of mass, body axes, for this
+  // body's mass (not per kg): replaces the collider's unit inertia times the
+  // mass. Must pass inertiaTensorProblem. Dynamic bodies only. Last, so the
+  // positional initialisers before it keep their meaning.
+  std::optional<Mat3> localInertia;
 };
 
 // A body turns about its centre of mass, which is its position. A convex
@@ -46,10 +53,20 @@ struct BodyDefinition {
 // come back unchanged. World::addBody and the scene loader both apply it.
 BodyDefinition aboutCentreOfMass(BodyDefinition definition);
 
+// Why `inertia` cannot be a body's explicit inertia tensor, or "" when it can:
+// it must be finite, symmetric within a relative 1e-9 (of its largest entry),
+// positive definite (its smallest principal moment above 16 DBL_EPSILON of its
+// largest, the rule the collider's inertia is held to), and its principal
+// moments must each be at most the sum of the other two (within a relative
+// 1e-9), as every real mass distribution's are.
+std::string inertiaTensorProblem(const Mat3& inertia);
+
 class RigidBody {
  public:
   // Throws std::invalid_argument for a missing collider, a non-positive mass
-  // on a dynamic body, a body both static and kinematic, or non-finite state.
+  // on a dynamic body, a body both static and kinematic, non-finite state, or
+  // an explicit localInertia that inertiaTensorProblem refuses (or that a
+  // static or kinematic body is given).
   explicit RigidBody(const BodyDefinition& definition);
 
   const Collider& collider() const { return *collider_; }
@@ -116,6 +133,8 @@ class RigidBody {
   bool hasFiniteState() const;
 
  private:
+  Mat3 explicitOrColliderInertia(const BodyDefinition& definition) const;
+
   std::shared_ptr<const Collider> collider_;
   Vec3 position_, linearVelocity_, angularVelocity_;
   Quat orientation_;
