@@ -90,4 +90,18 @@ void buildPointConstraints(const ManifoldFrame& frame, const ContactManifold& ma
   }
 }
 
+void maskLinearRows(const ManifoldFrame& frame, const Vec3& linearMaskA, const Vec3& linearMaskB, int rows,
+                    PointConstraint& c) {
+  for (int row = 0; row < rows; ++row) {
+    const Vec3& d = frame.directions[row];
+    const double give = frame.inverseMassA * d.cwiseProduct(linearMaskA).dot(d) +
+                        frame.inverseMassB * d.cwiseProduct(linearMaskB).dot(d);
+    const double mass = rowMass(give, c, row);
+    if (row == 0)
+      c.normalMass = mass;
+    else
+      c.tangentMass[row - 1] = mass;
+  }
+}
+
 }  // namespace physdbg

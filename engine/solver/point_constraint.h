@@ -46,6 +46,12 @@ struct ManifoldFrame {
   CombinedMaterial material;
 };
 
+// A speculative point whose gap is wider than this at the end of the step
+// has not been reached: it does not bounce (it would reverse a body still in
+// flight, millimetres above the floor). Closing a gap exactly leaves the
+// positions' rounding, many orders below this.
+constexpr double kReachedGap = 1e-6;  // m
+
 struct ConstraintSettings {
   double linearSlop;            // a point further apart pushes at its own surface
   double stickingSpeed;         // below it static friction, above it dynamic
@@ -70,5 +76,14 @@ void buildPointRows(const ManifoldFrame& frame, const ContactManifold& manifold,
 // Every field of every point's constraint into out[0, pointCount).
 void buildPointConstraints(const ManifoldFrame& frame, const ContactManifold& manifold,
                            const ConstraintSettings& settings, PointConstraint* out);
+
+// A body with translation locks moves along a row's direction d only by its
+// free part: the row's linear give is m^-1 d.(mask d), not m^-1. Rows built
+// without the masks (every other body's, bit for bit as before) overstate
+// it, so a contact along a locked axis kept building impulse that moved
+// nothing, and friction bounded by that impulse stopped a free spin. Redoes
+// rows [0, rows) of c's masses with each body's linear mask.
+void maskLinearRows(const ManifoldFrame& frame, const Vec3& linearMaskA, const Vec3& linearMaskB, int rows,
+                    PointConstraint& c);
 
 }  // namespace physdbg

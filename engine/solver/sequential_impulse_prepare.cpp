@@ -57,7 +57,15 @@ void SequentialImpulseSolver::buildNormalRows(const std::vector<RigidBody>& bodi
                                               std::size_t m, int rows, PointConstraint* out) const {
   const ManifoldFrame frame = manifoldFrame(bodies, manifold, m, false);
   const ConstraintSettings settings = constraintSettings();
-  for (int p = 0; p < manifold.pointCount; ++p) buildPointRows(frame, manifold, p, rows, settings, out[p]);
+  const bool locked = hasLinearLocks(manifold);
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    buildPointRows(frame, manifold, p, rows, settings, out[p]);
+    if (locked) maskLinearRows(frame, solverBodies_[manifold.a].linearMask, solverBodies_[manifold.b].linearMask, rows, out[p]);
+  }
+}
+
+bool SequentialImpulseSolver::hasLinearLocks(const ContactManifold& manifold) const {
+  return solverBodies_[manifold.a].linearMask != Vec3::Ones() || solverBodies_[manifold.b].linearMask != Vec3::Ones();
 }
 
 // A batch's constraints: every wide group's, straight into its lanes, and
@@ -88,8 +96,13 @@ void SequentialImpulseSolver::buildBatchConstraints(const std::vector<RigidBody>
   });
   forEach(work.singles.size(), 64, [&](std::size_t i) {
     const std::uint32_t m = work.singles[i];
-    buildPointConstraints(manifoldFrame(bodies, manifolds[m], m, true), manifolds[m], settings,
-                          &constraints_[m * slots]);
+    const ManifoldFrame frame = manifoldFrame(bodies, manifolds[m], m, true);
+    PointConstraint* rows = &constraints_[m * slots];
+    buildPointConstraints(frame, manifolds[m], settings, rows);
+    if (hasLinearLocks(manifolds[m]))
+      for (int p = 0; p < manifolds[m].pointCount; ++p)
+        maskLinearRows(frame, solverBodies_[manifolds[m].a].linearMask, solverBodies_[manifolds[m].b].linearMask, 3,
+                       rows[p]);
     constrained_[m] = 1;
   });
 }

@@ -1,7 +1,6 @@
 #include "engine/solver/sequential_impulse_solver.h"
 
 #include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -11,6 +10,7 @@
 
 #include "engine/contacts/material_combine.h"
 #include "engine/parallel/task_system.h"
+#include "engine/solver/bounce.h"
 #include "engine/solver/constraint_colouring.h"
 #include "engine/solver/resting_load.h"
 #include "engine/stage_timer.h"
@@ -45,16 +45,31 @@ void tangentBasis(const Vec3& normal, Vec3& first, Vec3& second) {
 // far below any impulse that matters.
 constexpr double kApproachRounding = 1e-9;
 
-// Eigenvalues below 1e-9 of the largest count as zero: the directions the
-// points cannot move in independently get no impulse.
-Eigen::Matrix4d pseudoInverse(const Eigen::Matrix4d& matrix) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(matrix);
-  const Eigen::Vector4d values = eigen.eigenvalues();
-  const double largest = values.cwiseAbs().maxCoeff();
-  Eigen::Vector4d inverse = Eigen::Vector4d::Zero();
-  for (int i = 0; i < 4; ++i)
-    if (values[i] > 1e-9 * largest) inverse[i] = 1.0 / values[i];
-  return eigen.eigenvectors() * inverse.asDiagonal() * eigen.eigenvectors().transpose();
+GapTurn gapTurnOf(ColliderKind kind) {
+  switch (kind) {
+    case ColliderKind::Sphere: return GapTurn::None;
+    case ColliderKind::Capsule: return GapTurn::Swing;  // symmetric about its local y axis
+    default: return GapTurn::Whole;
+  }
+}
+
+// The body's rotation for measuring gaps (GapTurn): its turn since the step
+// began, less the part its shape does not show. A capsule's turn q splits
+// into a twist about its axis and the swing that moves the axis (q = swing
+// twist); only the swing moves its surface.
+Mat3 gapRotation(const SolverBody& body) {
+  switch (body.gapTurn) {
+    case GapTurn::None: return body.rotation;
+    case GapTurn::Whole: return body.motion.orientation.toRotationMatrix();
+    case GapTurn::Swing: break;
+  }
+  const Quat turn = body.motion.orientation * body.startOrientation.conjugate();
+  const Vec3 axis = body.startOrientation * body.symmetryAxis;
+  const Vec3 along = turn.vec().dot(axis) * axis;
+  Quat twist(turn.w(), along.x(), along.y(), along.z());
+  if (twist.squaredNorm() == 0.0) return body.motion.orientation.toRotationMatrix();  // a half turn about a crossing axis
+  twist.normalize();
+  return ((turn * twist.conjugate()) * body.startOrientation).normalized().toRotationMatrix();
 }
 
 // The largest magnitude among a manifold's `count` points.
@@ -170,8 +185,12 @@ inline void SequentialImpulseSolver::applyNormal(const ContactManifold& manifold
 PredictedMotion SequentialImpulseSolver::predictMotion(const RigidBody& body, const StepContext& step) const {
   const Vec3 displacement = (body.linearVelocity() + body.stepAcceleration() * step.dt) * step.dt;
   const BodyReach reach = bodyReach(body, step);
-  const double share =
-      4.0 * settings_.linearSlop + (reach.linearVelocity.norm() + reach.acceleration * step.dt) * step.dt;
+  // At least each body's part of contactReach (reachShare, spin included):
+  // a pair the screen would call near must have overlapping boxes in the
+  // tree, or a brute-force broad phase finds a speculative pair the tree
+  // misses (two spinning balls, 2 mm apart).
+  const double share = 4.0 * settings_.linearSlop +
+                       (reach.linearVelocity.norm() + reach.acceleration * step.dt + reach.spin) * step.dt;
   const Aabb box = body.collider().worldBounds(body.transform());
   // A body whose motion turned non-finite is reported and frozen after the
   // step; its box stays where it is.
@@ -309,13 +328,16 @@ void SequentialImpulseSolver::warmStartFromPreviousStep(const StepContext& step)
 
 namespace {
 
-// A speculative manifold the solver pushed on: the bodies were about to meet
-// and were stopped before they did. Reported at its hardest-pushed point.
+// A speculative manifold the solver pushed on at any time in the step: the
+// bodies were about to meet and were stopped before they did. An impact that
+// leaves no load (bodies moving on together) pushes in its first substeps
+// only, so the step's total decides, not the last substep's impulse.
+// Reported at its hardest-pushed point.
 std::optional<Contact> speculativeImpact(const ContactManifold& manifold) {
   const ManifoldPoint* strongest = nullptr;
   for (int p = 0; p < manifold.pointCount; ++p) {
     const ManifoldPoint& point = manifold.points[p];
-    if (point.normalImpulse > 0.0 && (!strongest || point.normalImpulse > strongest->normalImpulse))
+    if (point.stepNormalImpulse > 0.0 && (!strongest || point.stepNormalImpulse > strongest->stepNormalImpulse))
       strongest = &point;
   }
   if (!strongest) return std::nullopt;
@@ -499,7 +521,8 @@ void SequentialImpulseSolver::planIsland(const std::vector<RigidBody>& bodies, s
     ColourWork& colour = work.colours[c];
     const std::size_t first = wideMembers.size();
     for (std::uint32_t m : colouring.colours[c])
-      (settings_.wideContacts && !approaching_[m] ? wideMembers : colour.scalar).push_back(m);
+      (settings_.wideContacts && !approaching_[m] && !hasLinearLocks(manifolds[m]) ? wideMembers : colour.scalar)
+          .push_back(m);
     colour.firstGroup = groupStarts.size();
     for (std::size_t i = first; i < wideMembers.size(); i += simd::width) groupStarts.push_back(i);
     colour.groupCount = groupStarts.size() - colour.firstGroup;
@@ -527,19 +550,43 @@ void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::v
     solve(manifolds, work, false, substep % 2 == 0);
   }
   for (const WideManifolds& group : work.groups) storeWideImpulses(group, manifolds, constraints_, constrained_);
-  applyRestitution(manifolds, island);
+  applyRestitution(manifolds, island, substeps.h);
   for (std::uint32_t id : island.bodies) bodies[id].setMotion(solverBodies_[id].motion);
 }
 
 // One movable body touching something immovable. A body still in flight,
 // with speculative contacts alone, keeps the full substeps: a box arriving at
 // 200 m/s needs them to stop flat against a wall without spinning up.
+// A body leaving the surface faster than calmSpeed (it has just bounced) or
+// driven into it is not resting either: with fewer substeps its flight
+// would follow another discrete path than it fell on, 1.7e-4 m lower each
+// elastic bounce of a ball dropped 2.5 m.
 bool SequentialImpulseSolver::restsAlone(const std::vector<ContactManifold>& manifolds,
                                          const ContactIsland& island) const {
   if (island.bodies.size() != 1) return false;
-  for (std::uint32_t m : island.manifolds)
-    if (touchingPoints(manifolds[m], touching_[m]) > 0) return true;
-  return false;
+  bool touches = false;
+  for (std::uint32_t m : island.manifolds) {
+    const ContactManifold& manifold = manifolds[m];
+    if (touchingPoints(manifold, touching_[m]) == 0) continue;
+    if (!(std::abs(normalSpeed(manifold)) <= settings_.calmSpeed)) return false;
+    touches = true;
+  }
+  return touches;
+}
+
+// The fastest a manifold's points move along its normal at the start of the
+// step, b against a.
+double SequentialImpulseSolver::normalSpeed(const ContactManifold& manifold) const {
+  const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
+  double fastest = 0.0;
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    const ManifoldPoint& point = manifold.points[p];
+    const Vec3 velocityA = a.motion.linearVelocity + a.motion.angularVelocity.cross(point.pointA - a.motion.position);
+    const Vec3 velocityB = b.motion.linearVelocity + b.motion.angularVelocity.cross(point.pointB - b.motion.position);
+    const double speed = (velocityB - velocityA).dot(manifold.normal);
+    if (std::abs(speed) > std::abs(fastest)) fastest = speed;
+  }
+  return fastest;
 }
 
 // Every body calm for calmSettling (updateCalmTimes), and every contact no
@@ -751,6 +798,8 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
     std::sort(extents.data(), extents.data() + 3);
     body.size = extents[1];
     body.rotation = source.orientation().toRotationMatrix();
+    body.startOrientation = source.orientation();
+    body.gapTurn = gapTurnOf(source.collider().kind());
     traits_[id] = {body.motion.position, body.inverseMass, body.inverseInertiaBound, body.size,
                    source.isKinematic(), body.movable};
     updateCalmTime(id, dt);
@@ -807,7 +856,7 @@ void SequentialImpulseSolver::integratePositions(std::span<const std::uint32_t> 
     SolverBody& body = solverBodies_[ids[i]];
     const Eigen::Vector4d before = body.motion.orientation.coeffs();
     integratePosition(body.motion, h);
-    if (body.motion.orientation.coeffs() != before) body.rotation = body.motion.orientation.toRotationMatrix();
+    if (body.motion.orientation.coeffs() != before) body.rotation = gapRotation(body);
   });
 }
 
@@ -955,16 +1004,8 @@ void SequentialImpulseSolver::prepareApproaches(const std::vector<RigidBody>& bo
     closing += fastest;
     if (!(closing > slowApproach)) return;
     buildNormalRows(bodies, manifold, m, 1, rows);
-    const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
-    const PointConstraint& first = rows[0];
-    const double linear = first.inverseMassA * normal.cwiseProduct(a.linearMask).dot(normal) +
-                          first.inverseMassB * normal.cwiseProduct(b.linearMask).dot(normal);
-    Eigen::Matrix4d mass = Eigen::Matrix4d::Zero();
-    for (int i = 0; i < manifold.pointCount; ++i)
-      for (int j = 0; j < manifold.pointCount; ++j) {
-        const PointConstraint &ci = rows[i], &cj = rows[j];
-        mass(i, j) = linear + ci.crossA[0].dot(cj.turnA[0]) + ci.crossB[0].dot(cj.turnB[0]);
-      }
+    const Eigen::Matrix4d mass =
+        normalMassMatrix(manifold, rows, solverBodies_[manifold.a].linearMask, solverBodies_[manifold.b].linearMask);
     approachMass_[m] = mass;
     approachInverse_[m] = pseudoInverse(mass);
     approaching_[m] = 1;
@@ -1013,24 +1054,55 @@ void SequentialImpulseSolver::solveFriction(ContactManifold& manifold, std::size
   }
 }
 
-// Restitution once, after the substeps, only where the contact pushed: the
-// approach velocity measured before the solve is reversed and scaled by e.
-// A speculative point bounces on the step it would have hit.
-void SequentialImpulseSolver::applyRestitution(std::vector<ContactManifold>& manifolds, const ContactIsland& island) {
+// Restitution, once per island after its substeps. A bounce is one event
+// for the whole face that makes it, so each manifold's bouncing points are
+// solved together (bounce.h): one point at a time, the first corner took
+// the whole bounce and a box landing flat left spinning.
+void SequentialImpulseSolver::applyRestitution(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
+                                               double substep) {
   for (std::uint32_t m : island.manifolds) {
     // A wide manifold keeps its constraints only if it may bounce.
-    if (!constrained_[m]) continue;
-    ContactManifold& manifold = manifolds[m];
-    for (int p = 0; p < manifold.pointCount; ++p) {
-      ManifoldPoint& point = manifold.points[p];
-      const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
-      if (c.restitution == 0.0 || c.largestImpulse == 0.0) continue;
-      const double normalVelocity = rowVelocity(manifold, c, manifold.normal, 0);
-      const double target = -c.restitution * c.approachVelocity;
-      const double total = std::max(point.normalImpulse - c.normalMass * (normalVelocity - target), 0.0);
-      applyNormal(manifold, c, point, total - point.normalImpulse);
-      point.normalImpulse = total;
-    }
+    if (constrained_[m]) bounceManifold(manifolds[m], m, substep);
+  }
+}
+
+// How fast forces and gravity close the pair at the point, m/s^2 (bounce.h's pull).
+double SequentialImpulseSolver::closingPull(const ContactManifold& manifold, const PointConstraint& c) const {
+  const auto accelerationAt = [this](std::uint32_t id, const Vec3& arm) -> Vec3 {
+    if (!solverBodies_[id].movable) return Vec3::Zero();
+    const MotionProperties& properties = motionProperties_[id];
+    return properties.acceleration + properties.angularAcceleration.cross(arm);
+  };
+  return -(accelerationAt(manifold.b, c.armB) - accelerationAt(manifold.a, c.armA)).dot(manifold.normal);
+}
+
+// Points that pushed this step, bounce (their approach was fast enough) and
+// reached the surface leave at bounceSpeed, all at once.
+void SequentialImpulseSolver::bounceManifold(ContactManifold& manifold, std::size_t m, double substep) {
+  const PointConstraint* rows = &constraints_[m * ContactManifold::maxPoints];
+  double gaps[ContactManifold::maxPoints];
+  manifoldGaps(manifold, gaps);
+  int mask = 0;
+  Eigen::Vector4d error = Eigen::Vector4d::Zero(), impulse = Eigen::Vector4d::Zero();
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    const PointConstraint& c = rows[p];
+    if (c.restitution == 0.0 || c.largestImpulse == 0.0 || gaps[p] > kReachedGap) continue;
+    mask |= 1 << p;
+    const double target = bounceSpeed({manifold.points[p].separation, c.approachVelocity, closingPull(manifold, c),
+                                       gaps[p], c.restitution, substep});
+    error[p] = rowVelocity(manifold, c, manifold.normal, 0) - target;
+    impulse[p] = manifold.points[p].normalImpulse;
+  }
+  if (mask == 0) return;
+  const Eigen::Matrix4d mass =
+      normalMassMatrix(manifold, rows, solverBodies_[manifold.a].linearMask, solverBodies_[manifold.b].linearMask);
+  const Eigen::Vector4d change = bounceImpulses(mass, error, impulse, manifold.pointCount, mask);
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    if (!((mask >> p) & 1)) continue;
+    ManifoldPoint& point = manifold.points[p];
+    const double total = std::max(point.normalImpulse + change[p], 0.0);
+    applyNormal(manifold, rows[p], point, total - point.normalImpulse);
+    point.normalImpulse = total;
   }
 }
 

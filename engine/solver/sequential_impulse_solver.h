@@ -104,6 +104,7 @@ class SequentialImpulseSolver final : public ContactSolver {
 
   // The two ways an island is calm (SolverSettings::calmSubsteps).
   bool restsAlone(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
+  double normalSpeed(const ContactManifold& manifold) const;
   bool restsTogether(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
   void updateCalmTime(std::size_t id, double dt);
   // calm: the island starts from SolverSettings::calmSubsteps.
@@ -188,6 +189,9 @@ class SequentialImpulseSolver final : public ContactSolver {
   ConstraintSettings constraintSettings() const;
   void buildNormalRows(const std::vector<RigidBody>& bodies, const ContactManifold& manifold, std::size_t m, int rows,
                        PointConstraint* out) const;
+  // Either body has a translation lock: its manifolds are solved one by one,
+  // with masked linear rows (maskLinearRows).
+  bool hasLinearLocks(const ContactManifold& manifold) const;
   void buildBatchConstraints(const std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
                              IslandWork& work, const std::vector<std::uint32_t>& wideMembers,
                              const std::vector<std::size_t>& groupStarts);
@@ -199,7 +203,10 @@ class SequentialImpulseSolver final : public ContactSolver {
   bool solveApproachTogether(ContactManifold& manifold, std::size_t m, double substep);
   void solveFriction(ContactManifold& manifold, std::size_t m, bool reversed);
   void solve(std::vector<ContactManifold>& manifolds, IslandWork& work, bool useBias, bool reversed);
-  void applyRestitution(std::vector<ContactManifold>& manifolds, const ContactIsland& island);
+  // After the substeps, manifold by manifold (bounce.h).
+  void applyRestitution(std::vector<ContactManifold>& manifolds, const ContactIsland& island, double substep);
+  void bounceManifold(ContactManifold& manifold, std::size_t m, double substep);
+  double closingPull(const ContactManifold& manifold, const PointConstraint& c) const;
   double largestPenetration(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
   // Each point's current gap (separation) at the solver bodies' poses.
   void manifoldGaps(const ContactManifold& manifold, double (&gaps)[ContactManifold::maxPoints]) const;

@@ -8,8 +8,19 @@
 
 namespace physdbg {
 
+// How a body's turning during the step moves the anchors its gaps are
+// measured at. A sphere's surface is the same after any turn, and a
+// capsule's after a turn about its own axis: an anchor carried round by such
+// a turn (a ball rolling) would rise off the floor, the gap open, and the
+// relax sweep let the body sink at gap / h, a velocity it never moves with
+// (a ball rolling at 1.43 m/s reported -0.054 m/s while its height stayed
+// put). Such turns leave their anchors where they were.
+enum class GapTurn : unsigned char { Whole, None, Swing };
+
 struct SolverBody {
   BodyMotion motion;
+  // The rotation gaps are measured with: the orientation's, less the turns
+  // that leave the shape in place (GapTurn).
   Mat3 rotation = Mat3::Identity();
   Mat3 inverseInertia = Mat3::Zero();
   // At least the largest eigenvalue of inverseInertia (its largest absolute
@@ -22,6 +33,9 @@ struct SolverBody {
   // them alone, so manifolds of other islands or colours may share them
   // while those run on other threads (nothing writes them).
   bool movable = false;
+  GapTurn gapTurn = GapTurn::Whole;
+  Quat startOrientation = Quat::Identity();  // Swing: the step's, to split its turn from
+  Vec3 symmetryAxis = Vec3::UnitY();          // Swing: body frame
 };
 
 // What the solver's set-up reads of each body in a manifold, side by side: a
