@@ -100,9 +100,17 @@ void SequentialImpulseSolver::buildBatchConstraints(const std::vector<RigidBody>
     PointConstraint* rows = &constraints_[m * slots];
     buildPointConstraints(frame, manifolds[m], settings, rows);
     if (hasLinearLocks(manifolds[m]))
-      for (int p = 0; p < manifolds[m].pointCount; ++p)
+      for (int p = 0; p < manifolds[m].pointCount; ++p) {
         maskLinearRows(frame, solverBodies_[manifolds[m].a].linearMask, solverBodies_[manifolds[m].b].linearMask, 3,
                        rows[p]);
+        // A point the locks leave no motion along the normal carries no
+        // load: a warm start or a new contact's seeded weight kept there
+        // would only bound friction that stops a spin it cannot affect.
+        if (rows[p].normalMass == 0.0) {
+          ManifoldPoint& point = manifolds[m].points[p];
+          point.normalImpulse = point.tangentImpulse[0] = point.tangentImpulse[1] = 0.0;
+        }
+      }
     constrained_[m] = 1;
   });
 }

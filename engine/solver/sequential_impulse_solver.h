@@ -202,7 +202,10 @@ class SequentialImpulseSolver final : public ContactSolver {
                     bool reversed);
   bool solveApproachTogether(ContactManifold& manifold, std::size_t m, double substep);
   void solveFriction(ContactManifold& manifold, std::size_t m, bool reversed);
-  void solve(std::vector<ContactManifold>& manifolds, IslandWork& work, bool useBias, bool reversed);
+  // stepEnds: the relax sweep after the step's last move.
+  void solve(std::vector<ContactManifold>& manifolds, IslandWork& work, bool useBias, bool reversed,
+             bool stepEnds = false);
+  bool reachedAny(std::size_t m, int count) const;  // a point's gap within kReachedGap
   // After the substeps, manifold by manifold (bounce.h).
   void applyRestitution(std::vector<ContactManifold>& manifolds, const ContactIsland& island, double substep);
   void bounceManifold(ContactManifold& manifold, std::size_t m, double substep);

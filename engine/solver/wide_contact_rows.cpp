@@ -102,9 +102,21 @@ template <class K>
   group.points[slot].stepNormalImpulse += impulse;
 }
 
+// Lanes whose manifold has no point within kReachedGap.
+Lanes unreachedLanes(const WideManifolds& group) {
+  const Lanes yes = simd::greater(Lanes::all(1.0), Lanes::zero());
+  Lanes unreached = yes;
+  for (int p = 0; p < group.pointSlots; ++p) {
+    const Lanes open = simd::greater(group.points[p].gap, Lanes::all(kReachedGap));
+    unreached = simd::both(unreached, simd::select(group.present[p], open, yes));
+  }
+  return unreached;
+}
+
+// `leave`: lanes to leave alone (unreachedLanes at the step's end), or none.
 template <class K>
 [[gnu::always_inline]] inline void solveNormal(LaneVelocities& a, LaneVelocities& b, WideManifolds& group, int slot,
-                                               const WideSweep& sweep) {
+                                               const WideSweep& sweep, const Lanes* leave) {
   WidePoint& point = group.points[slot];
   const Softness& softness = sweep.substeps->softness;
   const Lanes zero = Lanes::zero(), one = Lanes::all(1.0);
@@ -118,7 +130,8 @@ template <class K>
     impulseScale = simd::select(apart, zero, Lanes::all(softness.impulseScale));
   }
   const Lanes normalVelocity = rowVelocity(a, b, group, point, 0);
-  const Lanes impulse = -point.normalMass * massScale * (normalVelocity + bias) - impulseScale * point.normalImpulse;
+  Lanes impulse = -point.normalMass * massScale * (normalVelocity + bias) - impulseScale * point.normalImpulse;
+  if (leave) impulse = simd::select(*leave, zero, impulse);
   const Lanes total = simd::max(point.normalImpulse + impulse, zero);
   applyNormal<K>(a, b, group, slot, total - point.normalImpulse);
   point.normalImpulse = total;
@@ -183,9 +196,12 @@ void solveGroups(WideManifolds* const* groups, std::vector<SolverBody>& bodies, 
     b[g] = gather(groups[g]->bodyB, bodies);
   }
   const int used = groups[0]->pointSlots;
+  Lanes unreached[count];
+  if (sweep.stepEnds)
+    for (int g = 0; g < count; ++g) unreached[g] = unreachedLanes(*groups[g]);
   for (int visit = 0; visit < used; ++visit) {
     const int p = sweep.reversed ? used - 1 - visit : visit;
-    for (int g = 0; g < count; ++g) solveNormal<K>(a[g], b[g], *groups[g], p, sweep);
+    for (int g = 0; g < count; ++g) solveNormal<K>(a[g], b[g], *groups[g], p, sweep, sweep.stepEnds ? &unreached[g] : nullptr);
   }
   for (int visit = 0; visit < used; ++visit) {
     const int p = sweep.reversed ? used - 1 - visit : visit;

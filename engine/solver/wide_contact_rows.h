@@ -122,6 +122,9 @@ struct WideSweep {
   double maxPushSpeed = 0.0;
   bool useBias = true;  // the soft push-out of overlap (off in the relax sweep)
   bool reversed = false;
+  // The relax sweep after the step's last move: a manifold none of whose
+  // points is within kReachedGap is left alone (the scalar solve's rule).
+  bool stepEnds = false;
 };
 // One sweep over groups of one colour: in each group every point's normal
 // row, then its friction. Each group's numbers are those it would have
