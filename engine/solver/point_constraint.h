@@ -46,10 +46,13 @@ struct ManifoldFrame {
   CombinedMaterial material;
 };
 
-// A speculative point whose gap is wider than this at the end of the step
-// has not been reached: it does not bounce (it would reverse a body still in
-// flight, millimetres above the floor). Closing a gap exactly leaves the
-// positions' rounding, many orders below this.
+// A manifold none of whose points is within this gap after the step's last
+// move has not been reached: the last relax sweep leaves it alone (pushing
+// would slow a body still in flight, millimetres above the floor). Closing
+// a gap exactly leaves the positions' rounding, many orders below this.
+// (A point that pushed bounces when it ends within the touching slop: the
+// turn that follows a corner's impact lifts its anchor by a fraction of a
+// millimetre.)
 constexpr double kReachedGap = 1e-6;  // m
 
 struct ConstraintSettings {

@@ -201,8 +201,11 @@ PredictedMotion SequentialImpulseSolver::predictMotion(const RigidBody& body, co
 // How far apart two surfaces may be and still get a (speculative) contact:
 // the most they can close in one step, plus a few slops so resting contacts
 // are found before they touch.
+// A sphere's surface stays where it is however it turns: its spin reaches
+// nothing.
 BodyReach SequentialImpulseSolver::bodyReach(const RigidBody& body, const StepContext&) const {
-  const double radius = body.collider().localBounds().halfExtents().norm();
+  const bool round = body.collider().kind() == ColliderKind::Sphere;
+  const double radius = round ? 0.0 : body.collider().localBounds().halfExtents().norm();
   return {body.linearVelocity(), body.stepAcceleration().norm(), body.angularVelocity().norm() * radius};
 }
 
@@ -555,7 +558,7 @@ void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::v
     solve(manifolds, work, false, substep % 2 == 0, substep + 1 == substeps.count);
   }
   for (const WideManifolds& group : work.groups) storeWideImpulses(group, manifolds, constraints_, constrained_);
-  applyRestitution(manifolds, island, substeps.h);
+  applyRestitution(bodies, manifolds, island, substeps.h, substeps.h * substeps.count);
   for (std::uint32_t id : island.bodies) bodies[id].setMotion(solverBodies_[id].motion);
 }
 
@@ -779,6 +782,8 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
   solverBodies_.resize(bodies.size());
   traits_.resize(bodies.size());
   motionProperties_.resize(bodies.size());
+  startVelocities_.resize(bodies.size());
+  impactVelocities_.resize(bodies.size());
   calmTime_.resize(bodies.size(), 0.0);
   listed_.assign(bodies.size(), 0);
   for (const ContactManifold& manifold : manifolds) listed_[manifold.a] = listed_[manifold.b] = 1;
@@ -798,6 +803,7 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
       body.angularMask[axis] = source.lockRotation()[axis] ? 0.0 : 1.0;
     }
     body.motion = source.motion();
+    startVelocities_[id] = {body.motion.linearVelocity, body.motion.angularVelocity};
     motionProperties_[id] = source.motionProperties();
     Vec3 extents = source.collider().localBounds().halfExtents() * 2.0;
     std::sort(extents.data(), extents.data() + 3);
@@ -1073,9 +1079,16 @@ void SequentialImpulseSolver::solveFriction(ContactManifold& manifold, std::size
 // Restitution, once per island after its substeps. A bounce is one event
 // for the whole face that makes it, so each manifold's bouncing points are
 // solved together (bounce.h): one point at a time, the first corner took
-// the whole bounce and a box landing flat left spinning.
-void SequentialImpulseSolver::applyRestitution(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
-                                               double substep) {
+// the whole bounce and a box landing flat left spinning. An island where
+// the impact must travel on through bodies in contact (a row of touching
+// elastic balls) passes it on from body to body instead (passImpactsOn).
+void SequentialImpulseSolver::applyRestitution(const std::vector<RigidBody>& bodies,
+                                               std::vector<ContactManifold>& manifolds, const ContactIsland& island,
+                                               double substep, double dt) {
+  if (passesImpactsOn(bodies, manifolds, island)) {
+    passImpactsOn(bodies, manifolds, island, dt);
+    return;
+  }
   for (std::uint32_t m : island.manifolds) {
     // A wide manifold keeps its constraints only if it may bounce.
     if (constrained_[m]) bounceManifold(manifolds[m], m, substep);
@@ -1092,24 +1105,37 @@ double SequentialImpulseSolver::closingPull(const ContactManifold& manifold, con
   return -(accelerationAt(manifold.b, c.armB) - accelerationAt(manifold.a, c.armA)).dot(manifold.normal);
 }
 
-// Points that pushed this step, bounce (their approach was fast enough) and
-// reached the surface leave at bounceSpeed, all at once.
-void SequentialImpulseSolver::bounceManifold(ContactManifold& manifold, std::size_t m, double substep) {
+// Points that pushed this step, bounce (their approach at the start of the
+// step was fast enough) and ended within the touching slop (a corner's
+// anchor, lifted a fraction of a millimetre by the turn after its impact,
+// still bounces): a mask of them.
+int SequentialImpulseSolver::bouncingPoints(const ContactManifold& manifold, std::size_t m) const {
+  if (!constrained_[m]) return 0;
   const PointConstraint* rows = &constraints_[m * ContactManifold::maxPoints];
   double gaps[ContactManifold::maxPoints];
   manifoldGaps(manifold, gaps);
   int mask = 0;
+  for (int p = 0; p < manifold.pointCount; ++p)
+    if (rows[p].restitution != 0.0 && rows[p].largestImpulse != 0.0 && gaps[p] <= settings_.linearSlop) mask |= 1 << p;
+  return mask;
+}
+
+// The bouncing points leave at bounceSpeed, all at once.
+void SequentialImpulseSolver::bounceManifold(ContactManifold& manifold, std::size_t m, double substep) {
+  const int mask = bouncingPoints(manifold, m);
+  if (mask == 0) return;
+  const PointConstraint* rows = &constraints_[m * ContactManifold::maxPoints];
+  double gaps[ContactManifold::maxPoints];
+  manifoldGaps(manifold, gaps);
   Eigen::Vector4d error = Eigen::Vector4d::Zero(), impulse = Eigen::Vector4d::Zero();
   for (int p = 0; p < manifold.pointCount; ++p) {
+    if (!((mask >> p) & 1)) continue;
     const PointConstraint& c = rows[p];
-    if (c.restitution == 0.0 || c.largestImpulse == 0.0 || gaps[p] > kReachedGap) continue;
-    mask |= 1 << p;
     const double target = bounceSpeed({manifold.points[p].separation, c.approachVelocity, closingPull(manifold, c),
                                        gaps[p], c.restitution, substep});
     error[p] = rowVelocity(manifold, c, manifold.normal, 0) - target;
     impulse[p] = manifold.points[p].normalImpulse;
   }
-  if (mask == 0) return;
   const Eigen::Matrix4d mass =
       normalMassMatrix(manifold, rows, solverBodies_[manifold.a].linearMask, solverBodies_[manifold.b].linearMask);
   const Eigen::Vector4d change = bounceImpulses(mass, error, impulse, manifold.pointCount, mask);
@@ -1120,6 +1146,158 @@ void SequentialImpulseSolver::bounceManifold(ContactManifold& manifold, std::siz
     applyNormal(manifold, rows[p], point, total - point.normalImpulse);
     point.normalImpulse = total;
   }
+}
+
+namespace {
+
+bool pushed(const ContactManifold& manifold) {
+  for (int p = 0; p < manifold.pointCount; ++p)
+    if (manifold.points[p].stepNormalImpulse > 0.0) return true;
+  return false;
+}
+
+}  // namespace
+
+// A bounce whose impact must travel on: some manifold bounces, and another
+// that pushed this step joins two movable bodies with a bouncy material but
+// did not bounce itself (they touched, still). Bouncing the first alone
+// leaves the row behind it moving together: Newton's cradle lost half its
+// energy, the first ball came back and the rest left as one. Only along a
+// row: an island of at most kImpactRowContacts contacts in which no movable
+// body touches more than two others. In a pile, impacts ordered one after
+// another are neither what happens (they overlap in time) nor affordable
+// (a settling pile of 1000 balls took 30 times as long a step and never
+// came to rest); a pile bounces manifold by manifold.
+bool SequentialImpulseSolver::passesImpactsOn(const std::vector<RigidBody>& bodies,
+                                              const std::vector<ContactManifold>& manifolds,
+                                              const ContactIsland& island) const {
+  constexpr std::size_t kImpactRowContacts = 64;
+  if (island.bodies.size() < 2 || island.manifolds.size() > kImpactRowContacts) return false;
+  bool bounces = false, carries = false;
+  std::vector<std::pair<std::uint32_t, int>> touches;  // movable body, movable neighbours pushed on
+  const auto touch = [&touches](std::uint32_t id) {
+    for (auto& [body, count] : touches)
+      if (body == id) return ++count;
+    touches.emplace_back(id, 1);
+    return 1;
+  };
+  for (std::uint32_t m : island.manifolds) {
+    const ContactManifold& manifold = manifolds[m];
+    if (!pushed(manifold)) continue;
+    const bool movable = solverBodies_[manifold.a].movable && solverBodies_[manifold.b].movable;
+    if (movable && (touch(manifold.a) > 2 || touch(manifold.b) > 2)) return false;
+    if (bouncingPoints(manifold, m) != 0) {
+      bounces = true;
+    } else if (movable) {
+      carries = carries || combineMaterials(bodies[manifold.a].material(), bodies[manifold.b].material(),
+                                            settings_.restitutionCombine(), settings_.frictionCombine())
+                                   .restitution > 0.0;
+    }
+  }
+  return bounces && carries;
+}
+
+// The impacts of the step as rigid bodies meet, one contact after another
+// (Guendelman's sequential collisions): from the velocities the island's
+// bodies would end the step with untouched (start of step plus forces and
+// gravity), each contact still approaching takes the impulse that sends it
+// apart at e times its approach (at once over its points, bounce.h), or,
+// slower than the bounce threshold or with e = 0, just stops it; until none
+// approaches. An equal row of elastic balls passes the striker's speed down
+// the row to the far ball. These impulses replace the normal impulses the
+// substeps gave the island's pushed contacts (each point's step total), so
+// friction stays and each point's total says what it gave.
+void SequentialImpulseSolver::passImpactsOn(const std::vector<RigidBody>& bodies,
+                                            std::vector<ContactManifold>& manifolds, const ContactIsland& island,
+                                            double dt) {
+  std::vector<ImpactContact> contacts;
+  for (std::uint32_t m : island.manifolds) {
+    const ContactManifold& manifold = manifolds[m];
+    if (!pushed(manifold)) continue;
+    ImpactContact& contact = contacts.emplace_back();
+    contact.manifold = m;
+    buildNormalRows(bodies, manifold, m, 1, contact.rows);
+    contact.mass =
+        normalMassMatrix(manifold, contact.rows, solverBodies_[manifold.a].linearMask, solverBodies_[manifold.b].linearMask);
+    contact.restitution = combineMaterials(bodies[manifold.a].material(), bodies[manifold.b].material(),
+                                           settings_.restitutionCombine(), settings_.frictionCombine())
+                              .restitution;
+  }
+  const std::vector<Eigen::Vector4d> impacts = sequentialImpacts(manifolds, contacts, dt);
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    ContactManifold& manifold = manifolds[contacts[k].manifold];
+    for (int p = 0; p < manifold.pointCount; ++p) {
+      ManifoldPoint& point = manifold.points[p];
+      // The warm start (normalImpulse, the last substep's) is left as the
+      // substeps made it: an impact's impulse would shove next step's pile.
+      applyNormal(manifold, contacts[k].rows[p], point, impacts[k][p] - point.stepNormalImpulse);
+    }
+  }
+}
+
+// sequentialImpacts' run from each body's free velocities at the end of the
+// step, in contact order, until no point approaches by more than a 1e-12
+// share of the fastest speed (or 10,000 sweeps, where a chain has no end).
+// Returns each contact's total impulses; touches only its own copy of the
+// velocities.
+std::vector<Eigen::Vector4d> SequentialImpulseSolver::sequentialImpacts(const std::vector<ContactManifold>& manifolds,
+                                                                        const std::vector<ImpactContact>& contacts,
+                                                                        double dt) {
+  std::vector<Eigen::Vector4d> totals(contacts.size(), Eigen::Vector4d::Zero());
+  double fastest = 0.0;
+  for (const ImpactContact& contact : contacts)
+    for (std::uint32_t id : {manifolds[contact.manifold].a, manifolds[contact.manifold].b}) {
+      // Other batches share immovable bodies: those are read, never written.
+      if (!solverBodies_[id].movable) continue;
+      const MotionProperties& properties = motionProperties_[id];
+      impactVelocities_[id] = {startVelocities_[id].first + properties.acceleration * dt,
+                               startVelocities_[id].second + properties.angularAcceleration * dt};
+      fastest = std::max(fastest, impactVelocities_[id].first.norm());
+    }
+  const double still = 1e-12 * std::max(fastest, 1e-300);
+  constexpr int mostSweeps = 10'000;
+  for (int sweep = 0; sweep < mostSweeps; ++sweep) {
+    bool moved = false;
+    for (std::size_t k = 0; k < contacts.size(); ++k)
+      moved = impactOnce(manifolds[contacts[k].manifold], contacts[k], still, totals[k]) || moved;
+    if (!moved) break;
+  }
+  return totals;
+}
+
+// One contact of sequentialImpacts: its approaching points meet.
+bool SequentialImpulseSolver::impactOnce(const ContactManifold& manifold, const ImpactContact& contact, double still,
+                                         Eigen::Vector4d& total) {
+  const SolverBody &a = solverBodies_[manifold.a], &b = solverBodies_[manifold.b];
+  std::pair<Vec3, Vec3> fixedA = startVelocities_[manifold.a], fixedB = startVelocities_[manifold.b];
+  auto& [linearA, angularA] = a.movable ? impactVelocities_[manifold.a] : fixedA;
+  auto& [linearB, angularB] = b.movable ? impactVelocities_[manifold.b] : fixedB;
+  Eigen::Vector4d error = Eigen::Vector4d::Zero();
+  int mask = 0;
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    const PointConstraint& c = contact.rows[p];
+    const double speed = (linearB - linearA).dot(manifold.normal) + angularB.dot(c.crossB[0]) - angularA.dot(c.crossA[0]);
+    if (!(speed < -still)) continue;
+    const bool bounces = -speed > settings_.restitutionThreshold;
+    error[p] = speed - (bounces ? -contact.restitution * speed : 0.0);
+    mask |= 1 << p;
+  }
+  if (mask == 0) return false;
+  const Eigen::Vector4d change = bounceImpulses(contact.mass, error, total, manifold.pointCount, mask);
+  for (int p = 0; p < manifold.pointCount; ++p) {
+    const double impulse = std::max(total[p] + change[p], 0.0) - total[p];
+    total[p] += impulse;
+    const PointConstraint& c = contact.rows[p];
+    if (a.movable) {
+      linearA -= (c.inverseMassA * impulse) * manifold.normal.cwiseProduct(a.linearMask);
+      angularA -= impulse * c.turnA[0];
+    }
+    if (b.movable) {
+      linearB += (c.inverseMassB * impulse) * manifold.normal.cwiseProduct(b.linearMask);
+      angularB += impulse * c.turnB[0];
+    }
+  }
+  return true;
 }
 
 double SequentialImpulseSolver::largestPenetration(const std::vector<ContactManifold>& manifolds,

@@ -206,9 +206,27 @@ class SequentialImpulseSolver final : public ContactSolver {
   void solve(std::vector<ContactManifold>& manifolds, IslandWork& work, bool useBias, bool reversed,
              bool stepEnds = false);
   bool reachedAny(std::size_t m, int count) const;  // a point's gap within kReachedGap
-  // After the substeps, manifold by manifold (bounce.h).
-  void applyRestitution(std::vector<ContactManifold>& manifolds, const ContactIsland& island, double substep);
+  // After the substeps, manifold by manifold (bounce.h), or passed on from
+  // contact to contact where an impact travels through touching bodies.
+  void applyRestitution(const std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
+                        const ContactIsland& island, double substep, double dt);
+  int bouncingPoints(const ContactManifold& manifold, std::size_t m) const;
   void bounceManifold(ContactManifold& manifold, std::size_t m, double substep);
+  // A pushed manifold's normal rows at the start of the step, for passImpactsOn.
+  struct ImpactContact {
+    std::uint32_t manifold = 0;
+    PointConstraint rows[ContactManifold::maxPoints];
+    Eigen::Matrix4d mass;
+    double restitution = 0.0;
+  };
+  bool passesImpactsOn(const std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds,
+                       const ContactIsland& island) const;
+  void passImpactsOn(const std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
+                     const ContactIsland& island, double dt);
+  std::vector<Eigen::Vector4d> sequentialImpacts(const std::vector<ContactManifold>& manifolds,
+                                                 const std::vector<ImpactContact>& contacts, double dt);
+  bool impactOnce(const ContactManifold& manifold, const ImpactContact& contact, double still,
+                  Eigen::Vector4d& total);
   double closingPull(const ContactManifold& manifold, const PointConstraint& c) const;
   double largestPenetration(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
   // Each point's current gap (separation) at the solver bodies' poses.
@@ -235,6 +253,8 @@ class SequentialImpulseSolver final : public ContactSolver {
   std::vector<SolverBody> solverBodies_;
   std::vector<BodyTraits> traits_;  // per body in a manifold, from prepare
   std::vector<MotionProperties> motionProperties_;  // per body in a manifold, from prepare
+  std::vector<std::pair<Vec3, Vec3>> startVelocities_;  // per body in a manifold: linear, angular at the start
+  std::vector<std::pair<Vec3, Vec3>> impactVelocities_;  // sequentialImpacts' copy
   std::vector<char> listed_;                        // per body: in a manifold this step (prepare)
   std::vector<ManifoldTangents> tangents_;      // per manifold
   std::vector<PointConstraint> constraints_;    // maxPoints per manifold, where constrained_
