@@ -8,6 +8,8 @@
 #include "engine/broadphase/brute_force_broad_phase.h"
 #include "engine/broadphase/tree_broad_phase.h"
 #include "engine/disjoint_sets.h"
+#include "engine/contacts/manifold_builder.h"
+#include "engine/narrowphase/linear_cast.h"
 #include "engine/narrowphase/narrow_phase.h"
 #include "engine/parallel/task_system.h"
 #include "engine/stage_timer.h"
@@ -406,6 +408,60 @@ void World::testPairs(const StepContext& context) {
     }
   });
   if (offload_) testOffloadedPairs();
+  if (settings_.castFastPairs) castFastPairs(context);
+}
+
+// How far a body moves over the step, as the broad phase predicts it.
+Vec3 World::stepMotion(BodyId id, const StepContext& context) const {
+  if (!isMoving(id)) return Vec3::Zero();
+  const RigidBody& body = bodies_[id];
+  return (body.linearVelocity() + body.stepAcceleration() * context.dt) * context.dt;
+}
+
+// Pairs apart now that close by more than a quarter of the smaller body's
+// smallest extent this step (a thin wall is hit, not passed) are cast along
+// their motion; one that meets within the step gets the manifold built at
+// the time of impact, carried back to the start of the step: its points'
+// anchors are where the bodies meet, their gaps how far they have to close.
+void World::castFastPairs(const StepContext& context) {
+  castPairs_.clear();
+  for (std::size_t k = 0; k < nearPairs_.size(); ++k) {
+    const BodyPair& pair = pairs_[nearPairs_[k]];
+    const PairAnswer& answer = pairAnswers_[k];
+    pairAnswers_[k].cast = -1;
+    if (answer.kept || answer.result.status != ContactStatus::Separated ||
+        pairOutcomes_[nearPairs_[k]] == PairOutcome::Offloaded)
+      continue;
+    const double smallest = std::min(bodies_[pair.a].collider().localBounds().halfExtents().minCoeff(),
+                                     bodies_[pair.b].collider().localBounds().halfExtents().minCoeff());
+    if ((stepMotion(pair.b, context) - stepMotion(pair.a, context)).norm() > 0.5 * smallest) castPairs_.push_back(k);
+  }
+  castManifolds_.resize(castPairs_.size());
+  const double tolerance = 0.1 * solver_->touchingGap();
+  tasks_->parallelFor(castPairs_.size(), 1, [&](std::size_t begin, std::size_t end) {
+    ManifoldScratch scratch;
+    for (std::size_t j = begin; j < end; ++j) {
+      PairAnswer& answer = pairAnswers_[castPairs_[j]];
+      const BodyPair& pair = pairs_[nearPairs_[castPairs_[j]]];
+      const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
+      const std::optional<LinearCastHit> hit =
+          linearCast(a.collider(), a.transform(), stepMotion(pair.a, context), b.collider(), b.transform(),
+                     stepMotion(pair.b, context), tolerance, settings_.narrowPhase);
+      if (!hit || hit->fraction == 0.0) continue;
+      ContactManifold& manifold = castManifolds_[j];
+      manifold = ContactManifold{};
+      manifold.a = pair.a;
+      manifold.b = pair.b;
+      buildManifold(a.collider(), hit->a, b.collider(), hit->b, hit->result, answer.reach, scratch, manifold);
+      for (int p = 0; p < manifold.pointCount; ++p) {
+        ManifoldPoint& point = manifold.points[p];
+        point.pointA = a.transform().apply(point.localA);
+        point.pointB = b.transform().apply(point.localB);
+        point.separation = (point.pointB - point.pointA).dot(manifold.normal);
+      }
+      answer.cast = static_cast<int>(j);
+    }
+  });
 }
 
 // One batch for the whole pass: a GPU pays per dispatch and readback, not per pair.
@@ -451,6 +507,8 @@ void World::gatherContacts(const StepContext& context) {
     reaches_.push_back(test.reach);
     if (outcome == PairOutcome::Offloaded)
       manifoldSources_.push_back({&offloaded_[offloadedSoFar++].manifold, test.kept});
+    else if (test.cast >= 0)
+      manifoldSources_.push_back({&castManifolds_[static_cast<std::size_t>(test.cast)], nullptr});
     else
       manifoldSources_.push_back({nullptr, test.kept});
     if (contact.result.status == ContactStatus::Separated && contact.result.distance > touchingGap) continue;

@@ -54,6 +54,12 @@ struct WorldSettings {
   // pair is tested anew each step (to compare against, or to rule it out).
   bool reuseContacts = true;
 
+  // A pair apart at the start of the step whose bodies close by more than a
+  // quarter of the smaller one's size in the step is cast along its motion
+  // (narrowphase/linear_cast.h): its contact takes the normal and points of
+  // the time of impact. Scene key time_of_impact.
+  bool castFastPairs = true;
+
   bool allowSleep = true;
   double sleepLinearSpeed = 0.05;   // m/s
   double sleepAngularSpeed = 0.05;  // rad/s
@@ -266,12 +272,15 @@ class World {
     ContactResult result;
     ContactResult reversed;                 // B-A, tested only with bruteForceBothOrders
     const ReusableContact* kept = nullptr;  // the last answer, carried to now (result here, manifold by the solver)
+    int cast = -1;                          // its manifold at the time of impact, in castManifolds_
   };
   PairOutcome screenPair(const BodyPair& pair, const StepContext& context) const;
   PairOutcome answerPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer) const;
   void measureBodies(const StepContext& context);
   void testPairs(const StepContext& context);
   void testOffloadedPairs();
+  void castFastPairs(const StepContext& context);
+  Vec3 stepMotion(BodyId id, const StepContext& context) const;
   void gatherContacts(const StepContext& context);
   void keepAnswers();
   void testStaticPairs();
@@ -329,6 +338,8 @@ class World {
   std::vector<PairOutcome> pairOutcomes_;    // per candidate pair, this pass (testPairs)
   std::vector<std::uint32_t> nearPairs_;     // candidate pairs that passed screenPair, ascending (testPairs)
   std::vector<PairAnswer> pairAnswers_;      // per near pair
+  std::vector<std::uint32_t> castPairs_;       // near pairs (their k) cast this pass
+  std::vector<ContactManifold> castManifolds_;  // per cast pair, at the start of the step
   std::vector<char> inSomePair_;             // per body, this pass (measureBodies)
   std::vector<char> dynamicInPair_;          // per body in a pair, this pass (measureBodies)
   std::vector<Aabb> tightBounds_;            // per body in a pair, this pass (measureBodies)

@@ -389,6 +389,8 @@ void readWorldKeys(const JsonReader& reader, const json& root, SceneDescription&
   if (root.contains("dt")) scene.world.dt = reader.inRange(root["dt"], "dt", limits::minDt, limits::maxDt);
   if (root.contains("steps")) scene.steps = static_cast<int>(reader.integer(root["steps"], "steps", 1, limits::maxSteps));
   if (root.contains("allow_sleep")) scene.world.allowSleep = reader.boolean(root["allow_sleep"], "allow_sleep");
+  if (root.contains("time_of_impact"))
+    scene.world.castFastPairs = reader.boolean(root["time_of_impact"], "time_of_impact");
   if (root.contains("threads"))
     scene.world.threads = static_cast<int>(reader.integer(root["threads"], "threads", 0, limits::maxThreads));
   if (root.contains("broadphase")) readBroadPhase(reader, root["broadphase"], "broadphase", scene.world);
@@ -490,7 +492,8 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
   reader.checkKeys(
       root, "",
       {"name", "description", "gravity", "dt", "steps", "bodies", "camera", "layers", "allow_sleep", "threads",
-       "broadphase", "collision", "solver", "restitution_combine", "friction_combine", "forces", "set"});
+       "broadphase", "collision", "solver", "restitution_combine", "friction_combine", "forces", "set",
+       "time_of_impact"});
   SceneDescription scene;
   scene.source = sourceName;
   scene.name = std::filesystem::path(sourceName).stem().string();

@@ -264,3 +264,26 @@ TEST(SceneSet, HostileEntriesNameTheirKey) {
 
 }  // namespace
 }  // namespace physdbg
+
+namespace physdbg {
+namespace {
+
+// "time_of_impact": on by default, off when false; anything but a bool is
+// refused naming the key.
+TEST(SceneTimeOfImpact, DefaultsOnAndTurnsOffAndRefusesOtherTypes) {
+  const auto load = [](const std::string& extra) {
+    return parseScene(std::string(R"({"bodies": [{"shape": {"sphere": {"radius": 1}}}])") + extra + "}", "toi.json");
+  };
+  EXPECT_TRUE(load("").world.castFastPairs);
+  EXPECT_FALSE(load(R"(, "time_of_impact": false)").world.castFastPairs);
+  try {
+    load(R"(, "time_of_impact": 1)");
+    ADD_FAILURE() << "a number was taken for time_of_impact";
+  } catch (const SceneError& error) {
+    EXPECT_NE(std::string(error.what()).find("toi.json"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("time_of_impact"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace physdbg
