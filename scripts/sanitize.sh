@@ -11,7 +11,7 @@ export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 bash scripts/setup.sh
 CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPHYSDBG_SANITIZE=ON \
   -DPHYSDBG_FUZZ=ON -DPHYSDBG_WITH_PEERS=OFF >/dev/null
-targets=(physdbg engine_tests stability_tests report_tests render_tests golden_tests gpu_tests
+targets=(physdbg engine_tests peer_tests stability_tests report_tests render_tests golden_tests gpu_tests
          fuzz_scene_loader fuzz_hull_contact fuzz_recording fuzz_png_compare)
 cmake --build build-asan -j "$(nproc)" --target "${targets[@]}"
 

@@ -141,17 +141,27 @@ template <class K>
 template <class K>
 [[gnu::always_inline]] inline void solveFriction(LaneVelocities& a, LaneVelocities& b, WideManifolds& group, int slot) {
   WidePoint& point = group.points[slot];
-  Lanes tangent[2];
-  for (int t = 0; t < 2; ++t)
-    tangent[t] = point.tangentImpulse[t] - point.tangentMass[t] * rowVelocity(a, b, group, point, t + 1);
+  Lanes velocity[2], tangent[2];
+  for (int t = 0; t < 2; ++t) {
+    velocity[t] = rowVelocity(a, b, group, point, t + 1);
+    tangent[t] = point.tangentImpulse[t] - point.tangentMass[t] * velocity[t];
+  }
   const Lanes limit = point.friction * point.normalImpulse;
   const Lanes squared = tangent[0] * tangent[0] + tangent[1] * tangent[1];
   const Lanes clamp = simd::both(simd::greater(squared, limit * limit), simd::greater(squared, Lanes::zero()));
   // Resting contacts stick: most sweeps clamp no lane, and the square root
-  // and division were a fifth of the whole wide solve.
+  // and division were a fifth of the whole wide solve. A lane sliding past
+  // what its full friction could stop gets the force opposing its sliding
+  // velocity (the scalar solveFriction's rule).
   if (simd::any(clamp)) {
-    const Lanes scale = limit / simd::sqrt(simd::select(clamp, squared, Lanes::all(1.0)));
-    for (int t = 0; t < 2; ++t) tangent[t] = simd::select(clamp, tangent[t] * scale, tangent[t]);
+    const Lanes one = Lanes::all(1.0);
+    const Lanes speed = velocity[0] * velocity[0] + velocity[1] * velocity[1];
+    const Lanes least = simd::min(point.tangentMass[0], point.tangentMass[1]);
+    const Lanes sliding = simd::greater(speed * least * least, limit * limit);
+    const Lanes along = -limit / simd::sqrt(simd::select(sliding, speed, one));
+    const Lanes scale = limit / simd::sqrt(simd::select(clamp, squared, one));
+    for (int t = 0; t < 2; ++t)
+      tangent[t] = simd::select(clamp, simd::select(sliding, velocity[t] * along, tangent[t] * scale), tangent[t]);
   }
   applyRow<K>(a, b, group, slot, 1, tangent[0] - point.tangentImpulse[0]);
   applyRow<K>(a, b, group, slot, 2, tangent[1] - point.tangentImpulse[1]);

@@ -125,7 +125,13 @@ TEST(StableStacking, TwentyFivePercentOverlapIsUndoneWithinAFewStepsWithoutFlyin
   EXPECT_LT(upper.linearVelocity().norm(), 0.05);
   EXPECT_LT(lower.linearVelocity().norm(), 0.05);
   EXPECT_NEAR(upper.position().y(), 1.5, 0.01);
-  EXPECT_LT(horizontalDistance(upper.position(), Vec3(0, 1.5, 0)), 0.01);
+  // The push-out tilts the box (Gauss-Seidel over the face's four points),
+  // its corners slide, and friction at sliding corners moves it: 1.2 cm
+  // since sliding friction opposes each corner's velocity exactly (0.9 cm
+  // with the rows' joint update, which braked a spinning box 1.35% short).
+  // Recovery along the normal alone (tests/peers penetration) would leave
+  // it in place.
+  EXPECT_LT(horizontalDistance(upper.position(), Vec3(0, 1.5, 0)), 0.015);
 }
 
 TEST(StableStacking, TwoRunsOfThePyramidAreBitIdenticalAfter200Steps) {
