@@ -19,10 +19,6 @@ namespace {
 using simd::Lanes;
 constexpr int lanes = simd::width;
 
-void setLanes(Lanes (&target)[3], int lane, const Vec3& value) {
-  for (int axis = 0; axis < 3; ++axis) simd::setLane(target[axis], lane, value[axis]);
-}
-
 void cross(const Lanes* a, const Lanes* b, Lanes* out) {
   out[0] = a[1] * b[2] - a[2] * b[1];
   out[1] = a[2] * b[0] - a[0] * b[2];
@@ -219,8 +215,6 @@ unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::
                             const ConstraintSettings& settings, WideManifolds& group) {
   count = std::min(count, lanes);
   group.pointSlots = 0;
-  group.linearLocks = false;
-  const Vec3 zero = Vec3::Zero();
   for (int lane = 0; lane < lanes; ++lane) {
     const bool used = lane < count;
     const std::uint32_t m = used ? members[lane] : WideManifolds::empty;
@@ -230,12 +224,8 @@ unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::
     group.bodyB[lane] = used ? manifold->b : WideManifolds::empty;
     group.writableA[lane] = used && bodies[manifold->a].movable;
     group.writableB[lane] = used && bodies[manifold->b].movable;
-    setLanes(group.linearMaskA, lane, used ? bodies[manifold->a].linearMask : zero);
-    setLanes(group.linearMaskB, lane, used ? bodies[manifold->b].linearMask : zero);
     if (!used) continue;
     group.pointSlots = std::max(group.pointSlots, manifold->pointCount);
-    group.linearLocks = group.linearLocks || bodies[manifold->a].linearMask != Vec3::Ones() ||
-                        bodies[manifold->b].linearMask != Vec3::Ones();
   }
   const FrameLanes frame = frameLanes(frames, count);
   // The frame's directions are the manifold's normal and tangents.

@@ -70,13 +70,13 @@ const double* velocities(const BodyMotion& motion) {
          dot(a.angular(), point.crossA[row]);
 }
 
-// How a group is solved: `locks`, some lane has a locked linear axis
-// (without, every mask is 1 and multiplying by it changes no bit, so it is
-// left out); `isotropic`, its turns are its crosses times a scale per lane
-// (WideManifolds::isotropic), which spares the sweeps a third of their reads.
-template <bool locksIn, bool isotropicIn>
+// How a group is solved: `isotropic`, its turns are its crosses times a
+// scale per lane (WideManifolds::isotropic), which spares the sweeps a third
+// of their reads. No lane has a locked translation: such manifolds are
+// solved one by one, with masked rows (SequentialImpulseSolver::hasLinearLocks).
+template <bool isotropicIn>
 struct Kind {
-  static constexpr bool locks = locksIn, isotropic = isotropicIn;
+  static constexpr bool isotropic = isotropicIn;
 };
 
 template <class K>
@@ -88,9 +88,9 @@ template <class K>
     const Lanes direction = group.direction[row][axis];
     const Lanes turnA = K::isotropic ? point.crossA[row][axis] * group.spinScaleA : group.turns[slot].turnA[row][axis];
     const Lanes turnB = K::isotropic ? point.crossB[row][axis] * group.spinScaleB : group.turns[slot].turnB[row][axis];
-    a.v[axis] -= linearA * (K::locks ? direction * group.linearMaskA[axis] : direction);
+    a.v[axis] -= linearA * direction;
     a.v[3 + axis] -= impulse * turnA;
-    b.v[axis] += linearB * (K::locks ? direction * group.linearMaskB[axis] : direction);
+    b.v[axis] += linearB * direction;
     b.v[3 + axis] += impulse * turnB;
   }
 }
@@ -227,23 +227,11 @@ void solveGroups(WideManifolds* const* groups, std::vector<SolverBody>& bodies, 
 template <template <class, int> class Solve, int count, class... Arguments>
 void runTogether(std::span<WideManifolds> groups, Arguments&... arguments) {
   WideManifolds* together[count];
-  bool locks = false;
-  for (int g = 0; g < count; ++g) {
-    together[g] = &groups[g];
-    locks = locks || groups[g].linearLocks;
-  }
-  // A group with locked axes makes all take the masks: multiplying by a mask
-  // of 1 changes no bit, so the others' numbers are the same.
-  if (groups[0].isotropic) {
-    if (locks)
-      Solve<Kind<true, true>, count>::run(together, arguments...);
-    else
-      Solve<Kind<false, true>, count>::run(together, arguments...);
-  } else if (locks) {
-    Solve<Kind<true, false>, count>::run(together, arguments...);
-  } else {
-    Solve<Kind<false, false>, count>::run(together, arguments...);
-  }
+  for (int g = 0; g < count; ++g) together[g] = &groups[g];
+  if (groups[0].isotropic)
+    Solve<Kind<true>, count>::run(together, arguments...);
+  else
+    Solve<Kind<false>, count>::run(together, arguments...);
 }
 
 bool runsWith(const WideManifolds& group, const WideManifolds& first) {

@@ -57,7 +57,6 @@ struct WideManifolds {
   static constexpr std::uint32_t empty = ~0u;
   std::array<std::uint32_t, simd::width> manifold, bodyA, bodyB;  // `empty` in unused lanes
   std::array<bool, simd::width> writableA, writableB;             // a movable body in the lane
-  bool linearLocks;                                               // some lane's mask is not 1 on every axis
   // Every lane's inverse inertia, on both sides, is spinScale times the
   // identity with no rotation locked: a turn is the cross times that scale
   // (zero for an immovable body), and `turns` is left unwritten.
@@ -68,7 +67,6 @@ struct WideManifolds {
   simd::Lanes direction[3][3];  // [row][axis]: the normal, then the two tangents
   simd::Lanes inverseMassA, inverseMassB;  // as scaled for the contact
   simd::Lanes spinScaleA, spinScaleB;      // as scaled for the contact; 0 unless isotropic
-  simd::Lanes linearMaskA[3], linearMaskB[3];
   std::array<WidePoint, ContactManifold::maxPoints> points;
   // Each point's anchors in its bodies' frames, for the gaps.
   simd::Lanes localA[ContactManifold::maxPoints][3], localB[ContactManifold::maxPoints][3];
