@@ -529,7 +529,8 @@ void SequentialImpulseSolver::planIsland(const std::vector<RigidBody>& bodies, s
     ColourWork& colour = work.colours[c];
     const std::size_t first = wideMembers.size();
     for (std::uint32_t m : colouring.colours[c])
-      (settings_.wideContacts && !approaching_[m] && !hasLinearLocks(manifolds[m]) ? wideMembers : colour.scalar)
+      (settings_.wideContacts && !approaching_[m] && !overlapping_[m] && !hasLinearLocks(manifolds[m]) ? wideMembers
+                                                                                                    : colour.scalar)
           .push_back(m);
     colour.firstGroup = groupStarts.size();
     for (std::size_t i = first; i < wideMembers.size(); i += simd::width) groupStarts.push_back(i);
@@ -979,6 +980,43 @@ bool SequentialImpulseSolver::solveApproachTogether(ContactManifold& manifold, s
   return true;
 }
 
+// A face sunk deeper than the slop at every point, pushed out (and, in the
+// relax sweep, stopped) at all its points at once: the soft rows of
+// solveNormals with the manifold's normal mass matrix in place of each
+// point's own, from its pseudo-inverse, so a box sunk flat is pushed
+// straight out. Point by point, the first point took the most, the box
+// tilted, its corners slid and friction walked it sideways. Anything that
+// would pull, or a point that came apart, is left to the point-by-point
+// solve.
+bool SequentialImpulseSolver::solveOverlapTogether(ContactManifold& manifold, std::size_t m,
+                                                   const SubstepContext& substeps, bool useBias) {
+  const int count = manifold.pointCount;
+  const Softness& softness = substeps.softness;
+  Eigen::Vector4d error = Eigen::Vector4d::Zero(), impulse = Eigen::Vector4d::Zero();
+  for (int p = 0; p < count; ++p) {
+    const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    if (c.gap > 0.0) return false;
+    const double bias = useBias ? std::max(softness.biasRate * c.gap, -settings_.maxPushSpeed) : 0.0;
+    error[p] = rowVelocity(manifold, c, manifold.normal, 0) + bias;
+    impulse[p] = manifold.points[p].normalImpulse;
+  }
+  const double massScale = useBias ? softness.massScale : 1.0;
+  const double impulseScale = useBias ? softness.impulseScale : 0.0;
+  const Eigen::Vector4d change = -massScale * (approachInverse_[m] * error) - impulseScale * impulse;
+  const double scale = largestOf(impulse, count) + largestOf(change, count);
+  for (int p = 0; p < count; ++p)
+    if (impulse[p] + change[p] < -kApproachRounding * scale) return false;
+  for (int p = 0; p < count; ++p) {
+    PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    ManifoldPoint& point = manifold.points[p];
+    const double total = std::max(point.normalImpulse + change[p], 0.0);
+    applyNormal(manifold, c, point, total - point.normalImpulse);
+    point.normalImpulse = total;
+    c.largestImpulse = std::max(c.largestImpulse, total);
+  }
+  return true;
+}
+
 // Solving the points of a manifold one by one hands the first the whole
 // stop of an approaching body: a box arriving face first at 200 m/s would
 // leave spinning at 4.9 rad/s. Manifolds whose points are all still apart
@@ -992,13 +1030,26 @@ void SequentialImpulseSolver::prepareApproaches(const std::vector<RigidBody>& bo
                                                 double dt) {
   constexpr double slowApproach = 0.1;  // m/s
   approaching_.assign(manifolds.size(), 0);
+  overlapping_.assign(manifolds.size(), 0);
   approachInverse_.resize(manifolds.size());
   approachMass_.resize(manifolds.size());
   forEach(manifolds.size(), 256, [&](std::size_t m) {
     const ContactManifold& manifold = manifolds[m];
     if (manifold.pointCount < 2) return;
-    bool apart = true;
-    for (int p = 0; p < manifold.pointCount; ++p) apart = apart && manifold.points[p].separation > 0.0;
+    bool apart = true, deep = true;
+    for (int p = 0; p < manifold.pointCount; ++p) {
+      apart = apart && manifold.points[p].separation > 0.0;
+      deep = deep && manifold.points[p].separation < -settings_.linearSlop;
+    }
+    if (deep) {
+      PointConstraint rows[ContactManifold::maxPoints];
+      buildNormalRows(bodies, manifold, m, 1, rows);
+      approachMass_[m] =
+          normalMassMatrix(manifold, rows, solverBodies_[manifold.a].linearMask, solverBodies_[manifold.b].linearMask);
+      approachInverse_[m] = pseudoInverse(approachMass_[m]);
+      overlapping_[m] = 1;
+      return;
+    }
     if (!apart) return;
     const Vec3& normal = manifold.normal;
     // Closing speed at the fastest point, plus what gravity may add this
@@ -1042,8 +1093,9 @@ void SequentialImpulseSolver::solve(std::vector<ContactManifold>& manifolds, Isl
         // next step (a ball 1.8 mm above the floor lost 11% of its speed and
         // raised begin before it touched). Next step's solve stops it.
         const bool leave = stepEnds && !reachedAny(m, manifold.pointCount);
-        if (!leave && !(approaching_[m] && solveApproachTogether(manifold, m, substeps.h)))
-          solveNormals(manifold, m, substeps, useBias, reversed);
+        const bool together = approaching_[m] ? solveApproachTogether(manifold, m, substeps.h)
+                                              : overlapping_[m] && solveOverlapTogether(manifold, m, substeps, useBias);
+        if (!leave && !together) solveNormals(manifold, m, substeps, useBias, reversed);
         solveFriction(manifold, m, reversed);
       });
 }

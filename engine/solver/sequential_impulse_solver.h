@@ -201,6 +201,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   void solveNormals(ContactManifold& manifold, std::size_t m, const SubstepContext& substeps, bool useBias,
                     bool reversed);
   bool solveApproachTogether(ContactManifold& manifold, std::size_t m, double substep);
+  bool solveOverlapTogether(ContactManifold& manifold, std::size_t m, const SubstepContext& substeps, bool useBias);
   void solveFriction(ContactManifold& manifold, std::size_t m, bool reversed);
   // stepEnds: the relax sweep after the step's last move.
   void solve(std::vector<ContactManifold>& manifolds, IslandWork& work, bool useBias, bool reversed,
@@ -261,7 +262,8 @@ class SequentialImpulseSolver final : public ContactSolver {
   std::vector<char> constrained_;               // per manifold: its constraints are in constraints_
   std::vector<double> touching_;                  // per manifold: largest separation that holds weight, m
   std::vector<char> approaching_;                 // per manifold: every point still apart at the start
-  std::vector<Eigen::Matrix4d> approachMass_;     // per manifold, where approaching_: normal rows' J M^-1 J^T
+  std::vector<char> overlapping_;                 // per manifold: every point deeper than the slop at the start
+  std::vector<Eigen::Matrix4d> approachMass_;     // per manifold, where approaching_ or overlapping_: J M^-1 J^T
   std::vector<Eigen::Matrix4d> approachInverse_;  // and its pseudo-inverse
   std::vector<double> lastSubstep_;               // per body: the substep it took last step (0: none yet)
   std::vector<double> calmTime_;                  // per body: s it has begun steps in contact and calm
