@@ -1,5 +1,6 @@
 #include "engine/solver/contact_solver.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -22,6 +23,13 @@ SubstepContext substepContext(const StepContext& step, int count, double contact
     substeps.softness = {omega / a1, a2 * a3, a3};
   }
   return substeps;
+}
+
+int flightSubstepCount(const SolverSettings& settings, double dt) {
+  const int full = std::max(settings.substeps, 1);
+  const int most = std::max(settings.maxSubsteps, full);
+  const double wanted = std::ceil(4.0 * settings.contactHertz * dt - 1e-9);
+  return static_cast<int>(std::clamp(wanted, static_cast<double>(full), static_cast<double>(most)));
 }
 
 int ContactSolver::addCandidates(const std::vector<Contact>& candidates, const std::vector<double>& reaches,

@@ -121,6 +121,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   double bodySize(const ContactManifold& manifold) const;
   void rescaleWarmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
                         const std::vector<bool>& movable, double substep) const;
+  SubstepContext flightSubsteps(const StepContext& step) const;
   void integrateFreeBodies(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                            const std::vector<bool>& inIsland, const SubstepContext& substeps);
   // Into batches_, whose first batchCount_ entries are this step's.
@@ -213,13 +214,14 @@ class SequentialImpulseSolver final : public ContactSolver {
                         const ContactIsland& island, double substep, double dt);
   int bouncingPoints(const ContactManifold& manifold, std::size_t m) const;
   void bounceManifold(ContactManifold& manifold, std::size_t m, double substep);
-  // A pushed manifold's normal rows at the start of the step, for passImpactsOn.
+  // A manifold taking part in the impacts: its normal rows at the start of the step, for passImpactsOn.
   struct ImpactContact {
     std::uint32_t manifold = 0;
     PointConstraint rows[ContactManifold::maxPoints];
     Eigen::Matrix4d mass;
     double restitution = 0.0;
   };
+  bool takesPartInImpacts(const ContactManifold& manifold) const;
   bool passesImpactsOn(const std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds,
                        const ContactIsland& island) const;
   void passImpactsOn(const std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,

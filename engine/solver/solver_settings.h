@@ -114,4 +114,11 @@ inline CombineRule SolverSettings::frictionCombine() const {
   return combine.friction.value_or(kind == SolverKind::Seed ? CombineRule::Average : CombineRule::GeometricMean);
 }
 
+// The substeps of a step of dt for a body in flight under the sequential-
+// impulse solver: `substeps`, or as many as a contact at contactHertz needs
+// (a substep rate four times it, the rule every contact island follows), up
+// to maxSubsteps. So a body that lands integrates with the same h before,
+// during and after its landing step.
+int flightSubstepCount(const SolverSettings& settings, double dt);
+
 }  // namespace physdbg

@@ -16,7 +16,7 @@ namespace {
 // Jolt's release point: a radius-1 ball that, falling freely, would be
 // 1e-4 m into the floor after 60 steps (cFloorHitPos = 1 - 1e-4).
 double joltReleaseHeight(const WorldSettings& s) {
-  const long n = 60L * s.solver.substeps;
+  const long n = 60L * flightSubsteps(s);
   return (1.0 - 1e-4) - eulerPosition(0.0, 0.0, -kGravity, substep(s), n);
 }
 

@@ -1,6 +1,7 @@
 // Free fall, constant forces and torques, and drag, against the closed forms
 // of the engine's integrator: semi-implicit Euler on every substep (h = dt /
-// substeps; a body in no manifold takes solver.substeps), so after N substeps
+// substeps; a body in no manifold takes flightSubstepCount's, which is
+// solver.substeps up to 1/30 s steps), so after N substeps
 // x = x0 + v0 N h + a h^2 N (N + 1) / 2 and v = v0 + a N h. Cases from Jolt's
 // UnitTests/Physics/PhysicsTests.cpp; drag follows Box2D v3's law (no peer
 // unit test covers drag).
@@ -27,7 +28,7 @@ TEST(PeerFreeFall, BoxFollowsSemiImplicitEulerAtThreeStepLengths) {
     const int steps = static_cast<int>(std::lround(duration / dt));
     stepN(world, steps);
     const double h = substep(world.settings());
-    const long substeps = static_cast<long>(steps) * world.settings().solver.substeps;
+    const long substeps = static_cast<long>(steps) * flightSubsteps(world.settings());
     const RigidBody& body = world.body(id);
     const double expectedY = eulerPosition(10.0, 0.0, -kGravity, h, substeps);
     EXPECT_NEAR(body.linearVelocity().y(), -kGravity * duration, 1e-11);
@@ -77,7 +78,7 @@ TEST(PeerForces, ConstantForceAcceleratesAlongsideGravity) {
       world.step();
     }
     const double h = substep(world.settings());
-    const long n = static_cast<long>(steps) * world.settings().solver.substeps;
+    const long n = static_cast<long>(steps) * flightSubsteps(world.settings());
     const RigidBody& body = world.body(id);
     EXPECT_NEAR(body.linearVelocity().x(), acceleration * duration, 1e-11);
     EXPECT_NEAR(body.linearVelocity().y(), -kGravity * duration, 1e-11);
@@ -111,7 +112,7 @@ TEST(PeerForces, ConstantTorqueSpinsUpACubeAboutAFixedAxis) {
       world.step();
     }
     const double h = substep(world.settings());
-    const long n = static_cast<long>(steps) * world.settings().solver.substeps;
+    const long n = static_cast<long>(steps) * flightSubsteps(world.settings());
     const double angle = eulerPosition(0.0, 0.0, alpha, h, n);
     const RigidBody& body = world.body(id);
     EXPECT_NEAR(body.angularVelocity().y(), alpha * duration, 1e-11);
@@ -173,7 +174,7 @@ TEST(PeerDamping, LinearDragDividesTheVelocityOnEverySubstep) {
   const BodyId id = world.addBody(body);
   stepN(world, 120);
   const double h = substep(world.settings());
-  const long n = 120L * world.settings().solver.substeps;
+  const long n = 120L * flightSubsteps(world.settings());
   const double q = 1.0 / (1.0 + drag * h);
   const double expectedV = v0 * std::pow(q, static_cast<double>(n));
   const double expectedX = v0 * h * q * (1.0 - std::pow(q, static_cast<double>(n))) / (1.0 - q);
@@ -197,7 +198,7 @@ TEST(PeerDamping, AngularDragDividesTheSpinOnEverySubstep) {
   body.angularVelocity = Vec3(0, 0, w0);
   const BodyId id = world.addBody(body);
   stepN(world, 90);
-  const long n = 90L * world.settings().solver.substeps;
+  const long n = 90L * flightSubsteps(world.settings());
   const double expected = w0 * std::pow(1.0 + drag * substep(world.settings()), -static_cast<double>(n));
   measured("spin_rad_s", world.body(id).angularVelocity().z());
   EXPECT_NEAR(world.body(id).angularVelocity().z(), expected, 1e-12 * w0);

@@ -103,7 +103,10 @@ inline WorldSettings weightless(double dt = 1.0 / 60.0) {
 
 // The substep a free body (in no manifold) and a body in flight take: the
 // step cut into solver.substeps (sequential_impulse_solver.cpp).
-inline double substep(const WorldSettings& s) { return s.dt / s.solver.substeps; }
+// The substeps of a body in flight and their length (solver_settings.h:
+// more than `substeps` at long steps, where a 60 Hz contact needs them).
+inline int flightSubsteps(const WorldSettings& s) { return flightSubstepCount(s.solver, s.dt); }
+inline double substep(const WorldSettings& s) { return s.dt / flightSubsteps(s); }
 
 inline void stepN(World& world, int steps) {
   for (int i = 0; i < steps; ++i) world.step();
