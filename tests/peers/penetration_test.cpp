@@ -101,7 +101,7 @@ TEST(PeerPenetration, DISABLED_OverlapWithTheFloorSettlesAtTheRestingDepthWithLo
 // (1e-6). Ours: x and z unchanged within 1e-6 m, speed below 1e-7 m/s and
 // spin below 1e-7 rad/s.
 // Fails today: the box walks sideways by up to 7.0e-5 m while it is pushed
-// out, and still moves at 7.2e-6 m/s after 1 s. A face sunk deeper than the
+// out, and still moves at 1.2e-5 m/s after 1 s. A face sunk deeper than the
 // slop is pushed out at all its points at once (straight up); the last 5 mm
 // go point by point, where Gauss-Seidel over the four corners tilts the box
 // a little and its corners slide. (5.3e-4 m and 6.4e-5 m/s when the whole
