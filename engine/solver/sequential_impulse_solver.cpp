@@ -1184,10 +1184,10 @@ double SequentialImpulseSolver::closingPull(const ContactManifold& manifold, con
 // step was fast enough) and ended within the touching slop (a corner's
 // anchor, lifted a fraction of a millimetre by the turn after its impact,
 // still bounces): a mask of them.
-int SequentialImpulseSolver::bouncingPoints(const ContactManifold& manifold, std::size_t m) const {
-  if (!constrained_[m]) return 0;
+int SequentialImpulseSolver::bouncingPoints(const ContactManifold& manifold, std::size_t m,
+                                            double (&gaps)[ContactManifold::maxPoints]) const {
+  if (!mayBounce(manifold, m)) return 0;
   const PointConstraint* rows = &constraints_[m * ContactManifold::maxPoints];
-  double gaps[ContactManifold::maxPoints];
   manifoldGaps(manifold, gaps);
   int mask = 0;
   for (int p = 0; p < manifold.pointCount; ++p)
@@ -1195,13 +1195,22 @@ int SequentialImpulseSolver::bouncingPoints(const ContactManifold& manifold, std
   return mask;
 }
 
+// Whether any point may bounce, before its gap is measured: it pushed and
+// its approach was fast enough. Most manifolds fail this, and cheaply.
+bool SequentialImpulseSolver::mayBounce(const ContactManifold& manifold, std::size_t m) const {
+  if (!constrained_[m]) return false;
+  const PointConstraint* rows = &constraints_[m * ContactManifold::maxPoints];
+  for (int p = 0; p < manifold.pointCount; ++p)
+    if (rows[p].restitution != 0.0 && rows[p].largestImpulse != 0.0) return true;
+  return false;
+}
+
 // The bouncing points leave at bounceSpeed, all at once.
 void SequentialImpulseSolver::bounceManifold(ContactManifold& manifold, std::size_t m, double substep) {
-  const int mask = bouncingPoints(manifold, m);
+  double gaps[ContactManifold::maxPoints];
+  const int mask = bouncingPoints(manifold, m, gaps);
   if (mask == 0) return;
   const PointConstraint* rows = &constraints_[m * ContactManifold::maxPoints];
-  double gaps[ContactManifold::maxPoints];
-  manifoldGaps(manifold, gaps);
   Eigen::Vector4d error = Eigen::Vector4d::Zero(), impulse = Eigen::Vector4d::Zero();
   for (int p = 0; p < manifold.pointCount; ++p) {
     if (!((mask >> p) & 1)) continue;
@@ -1254,6 +1263,9 @@ bool SequentialImpulseSolver::passesImpactsOn(const std::vector<RigidBody>& bodi
                                               const ContactIsland& island) const {
   constexpr std::size_t kImpactRowContacts = 64;
   if (island.bodies.size() < 2 || island.manifolds.size() > kImpactRowContacts) return false;
+  if (std::none_of(island.manifolds.begin(), island.manifolds.end(),
+                   [&](std::uint32_t m) { return mayBounce(manifolds[m], m); }))
+    return false;
   bool bounces = false, carries = false;
   std::vector<std::pair<std::uint32_t, int>> touches;  // movable body, movable neighbours pushed on
   const auto touch = [&touches](std::uint32_t id) {
@@ -1267,7 +1279,8 @@ bool SequentialImpulseSolver::passesImpactsOn(const std::vector<RigidBody>& bodi
     if (!takesPartInImpacts(manifold)) continue;
     const bool movable = solverBodies_[manifold.a].movable && solverBodies_[manifold.b].movable;
     if (movable && (touch(manifold.a) > 2 || touch(manifold.b) > 2)) return false;
-    if (bouncingPoints(manifold, m) != 0) {
+    double gaps[ContactManifold::maxPoints];
+    if (bouncingPoints(manifold, m, gaps) != 0) {
       bounces = true;
     } else if (movable) {
       carries = carries || combineMaterials(bodies[manifold.a].material(), bodies[manifold.b].material(),

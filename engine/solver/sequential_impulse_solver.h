@@ -212,7 +212,9 @@ class SequentialImpulseSolver final : public ContactSolver {
   // contact to contact where an impact travels through touching bodies.
   void applyRestitution(const std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
                         const ContactIsland& island, double substep, double dt);
-  int bouncingPoints(const ContactManifold& manifold, std::size_t m) const;
+  bool mayBounce(const ContactManifold& manifold, std::size_t m) const;
+  // A mask of the points that bounce; `gaps` gets every point's gap (when it may bounce).
+  int bouncingPoints(const ContactManifold& manifold, std::size_t m, double (&gaps)[ContactManifold::maxPoints]) const;
   void bounceManifold(ContactManifold& manifold, std::size_t m, double substep);
   // A manifold taking part in the impacts: its normal rows at the start of the step, for passImpactsOn.
   struct ImpactContact {

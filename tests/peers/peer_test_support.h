@@ -24,6 +24,7 @@
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/sphere_collider.h"
 #include "engine/world.h"
+#include "scenes/body_builders.h"
 #include "scenes/scene.h"
 
 namespace physdbg::peers {
@@ -66,20 +67,14 @@ inline BodyDefinition floorSlab(double top = 0.0, double halfWidth = 100.0, cons
 
 inline BodyDefinition sphere(double radius, const Vec3& position, double mass = 1.0,
                              const Material& m = material(0.0, 0.6)) {
-  BodyDefinition body;
-  body.collider = std::make_shared<SphereCollider>(radius);
-  body.position = position;
-  body.mass = mass;
+  BodyDefinition body = dynamicBody(std::make_shared<SphereCollider>(radius), position, mass);
   body.material = m;
   return body;
 }
 
 inline BodyDefinition box(const Vec3& halfExtents, const Vec3& position, double mass = 1.0,
                           const Material& m = material(0.0, 0.6)) {
-  BodyDefinition body;
-  body.collider = std::make_shared<BoxCollider>(halfExtents);
-  body.position = position;
-  body.mass = mass;
+  BodyDefinition body = dynamicBody(std::make_shared<BoxCollider>(halfExtents), position, mass);
   body.material = m;
   return body;
 }
