@@ -87,6 +87,9 @@ BulletWorld::BulletWorld(const SceneDescription& scene, bool allowSleep) : impl_
     if (!definition.collider) throw std::invalid_argument("BulletWorld: body without a collider");
     impl_->addBody(definition, impl_->shapeFor(*definition.collider, sources), allowSleep);
   }
+  // The scene's sleepers start asleep here too, so both engines skip the same bodies.
+  if (allowSleep)
+    for (const BodyId id : scene.sleeping) impl_->bodies.at(id)->setActivationState(ISLAND_SLEEPING);
 }
 
 BulletWorld::~BulletWorld() = default;

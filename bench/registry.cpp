@@ -11,6 +11,7 @@ Benchmark gpuBenchmark();
 #endif
 Benchmark dropBenchmark();
 Benchmark pyramidBenchmark();
+Benchmark sleepingBenchmark();
 
 // Each benchmark lives in its own file and is listed here, in output order.
 std::vector<Benchmark> allBenchmarks() {
@@ -24,6 +25,7 @@ std::vector<Benchmark> allBenchmarks() {
 #endif
   benchmarks.push_back(dropBenchmark());
   benchmarks.push_back(pyramidBenchmark());
+  benchmarks.push_back(sleepingBenchmark());
 #ifdef PHYSDBG_HAVE_RENDER
   benchmarks.push_back(gpuBenchmark());
 #endif

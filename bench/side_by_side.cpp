@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <malloc.h>
 #include <nlohmann/json.hpp>
 
 #include "bench/bullet_world.h"
@@ -18,6 +19,11 @@ double millisecondsPerStep(int steps, Step&& step) {
   return 1000.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / steps;
 }
 
+double heapInUse() {
+  const struct mallinfo2 info = mallinfo2();
+  return static_cast<double>(info.uordblks + info.hblkhd);
+}
+
 }  // namespace
 
 EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options, int threads) {
@@ -28,6 +34,7 @@ EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options
     scene.world.collisionDevice = CollisionDevice::Gpu;
     offload = options.makeGpuCollision();
   }
+  const double heapBefore = heapInUse();
   World world = buildWorld(scene, offload);
   EngineRun run;
   for (const RigidBody& body : world.bodies()) run.startPositions.push_back(body.position());
@@ -35,6 +42,7 @@ EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options
     world.step();
     run.profile += world.lastStepStats().profile;
   });
+  run.heapBytes = heapInUse() - heapBefore;
   for (const RigidBody& body : world.bodies()) {
     run.finalPositions.push_back(body.position());
     if (!body.isStatic()) run.kineticEnergy += body.kineticEnergy();
@@ -46,9 +54,11 @@ EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options
 EngineRun runBullet(const SceneDescription& scene, int steps, bool allowSleep) {
   EngineRun run;
   if (!BulletWorld::available()) return run;
+  const double heapBefore = heapInUse();
   BulletWorld world(scene, allowSleep);
   for (std::size_t i = 0; i < world.bodyCount(); ++i) run.startPositions.push_back(world.position(i));
   run.msPerStep = millisecondsPerStep(steps, [&] { world.step(); });
+  run.heapBytes = heapInUse() - heapBefore;
   for (std::size_t i = 0; i < world.bodyCount(); ++i) run.finalPositions.push_back(world.position(i));
   run.kineticEnergy = world.kineticEnergy();
   run.ran = true;

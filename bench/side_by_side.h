@@ -18,6 +18,10 @@ struct EngineRun {
   double kineticEnergy = 0.0;
   std::vector<Vec3> startPositions, finalPositions;
   StepProfile profile;  // physdbg: summed over the steps
+  // Heap in use after the last step less before the world was built
+  // (glibc's mallinfo2: bytes allocated, not pages touched), so runs in one
+  // process do not hide behind memory an earlier run freed.
+  double heapBytes = 0.0;
 };
 
 // With options.solver, physdbg runs the scene under that solver, on

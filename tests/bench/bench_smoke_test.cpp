@@ -28,6 +28,26 @@ TEST(Benchmarks, EveryBenchmarkPrintsTheCommonFields) {
   }
 }
 
+// The sleepers never meet the spheres: physdbg's spheres end bit for bit
+// where they end alone, and no sleeper moves (Bullet's likewise, to 0.1 mm).
+TEST(Benchmarks, SleepingBenchmarkDoesTheSameWorkWithAndWithoutSleepers) {
+  for (const Benchmark& benchmark : allBenchmarks()) {
+    if (benchmark.name != "sleeping") continue;
+    BenchOptions options;
+    options.quick = true;
+    options.threads = 1;
+    int records = 0;
+    benchmark.run(options, [&](const nlohmann::json& record) {
+      ++records;
+      EXPECT_EQ(record.at("ours_sphere_mismatch").get<double>(), 0.0) << record.dump();
+      EXPECT_EQ(record.at("ours_largest_prop_move").get<double>(), 0.0) << record.dump();
+      EXPECT_TRUE(record.at("same_work").get<bool>()) << record.dump();
+      EXPECT_GT(record.at("ours_bytes_per_body").get<double>(), 0.0) << record.dump();
+    });
+    EXPECT_EQ(records, 1);
+  }
+}
+
 // The scene benchmarks run one thread and every core (one row each, the
 // all-core one with its scaling and the host's), or only what --threads
 // asks for.
