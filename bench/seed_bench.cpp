@@ -111,7 +111,8 @@ class StageReplay {
       const RigidBody& body = world.body(id);
       proxies_.push_back(broadPhase_->addProxy(body.collider().worldBounds(body.transform()), id,
                                                body.isStatic() ? ProxyMotion::Static : ProxyMotion::Dynamic));
-      movable_.push_back(!body.isStatic());
+      movable_.flags.push_back(!body.isStatic());
+      if (!body.isStatic()) movable_.ids.push_back(static_cast<std::uint32_t>(movable_.flags.size() - 1));
     }
   }
 
@@ -179,7 +180,7 @@ class StageReplay {
   std::unique_ptr<ContactSolver> solver_;
   std::unique_ptr<BroadPhase> broadPhase_;
   std::vector<int> proxies_;
-  std::vector<bool> movable_;
+  MovableBodies movable_;
   std::vector<BodyPair> pairs_;
   std::vector<Contact> candidates_, touching_;
   std::vector<double> reaches_;

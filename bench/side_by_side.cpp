@@ -26,7 +26,7 @@ double heapInUse() {
 
 }  // namespace
 
-EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options, int threads) {
+EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options, int threads, bool warmUp) {
   if (options.solver) scene.world.solver.kind = *options.solver;
   scene.world.threads = threads;
   std::shared_ptr<CollisionOffload> offload;
@@ -38,6 +38,7 @@ EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options
   World world = buildWorld(scene, offload);
   EngineRun run;
   for (const RigidBody& body : world.bodies()) run.startPositions.push_back(body.position());
+  if (warmUp) run.firstStepMs = millisecondsPerStep(1, [&] { world.step(); });
   run.msPerStep = millisecondsPerStep(steps, [&] {
     world.step();
     run.profile += world.lastStepStats().profile;
@@ -51,12 +52,13 @@ EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options
   return run;
 }
 
-EngineRun runBullet(const SceneDescription& scene, int steps, bool allowSleep) {
+EngineRun runBullet(const SceneDescription& scene, int steps, bool allowSleep, bool warmUp) {
   EngineRun run;
   if (!BulletWorld::available()) return run;
   const double heapBefore = heapInUse();
   BulletWorld world(scene, allowSleep);
   for (std::size_t i = 0; i < world.bodyCount(); ++i) run.startPositions.push_back(world.position(i));
+  if (warmUp) run.firstStepMs = millisecondsPerStep(1, [&] { world.step(); });
   run.msPerStep = millisecondsPerStep(steps, [&] { world.step(); });
   run.heapBytes = heapInUse() - heapBefore;
   for (std::size_t i = 0; i < world.bodyCount(); ++i) run.finalPositions.push_back(world.position(i));

@@ -22,12 +22,17 @@ struct EngineRun {
   // (glibc's mallinfo2: bytes allocated, not pages touched), so runs in one
   // process do not hide behind memory an earlier run freed.
   double heapBytes = 0.0;
+  double firstStepMs = 0.0;  // with warm-up: the step taken before the timed ones
 };
 
 // With options.solver, physdbg runs the scene under that solver, on
 // `threads` threads (0 every core).
-EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options, int threads);
-EngineRun runBullet(const SceneDescription& scene, int steps, bool allowSleep);
+// With `warmUp`, one step is taken and timed apart (firstStepMs) before the
+// `steps` timed ones: where the first step is the world settling in (every
+// proxy's first query, per-body tables sized) and the benchmark asks what a
+// step costs after it.
+EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options, int threads, bool warmUp = false);
+EngineRun runBullet(const SceneDescription& scene, int steps, bool allowSleep, bool warmUp = false);
 
 // The thread counts a scene benchmark runs physdbg on: options.threads alone
 // when given (0 read as every core), else 1 and every core (just 1 on a

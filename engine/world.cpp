@@ -95,7 +95,52 @@ BodyId World::addBody(const BodyDefinition& definition) {
   present_.push_back(true);
   slowTime_.push_back(0.0);
   island_.push_back(id);
+  inActive_.push_back(0);
+  isEdited_.push_back(0);
+  movable_.flags.push_back(false);
+  updateActivity(id);
   return id;
+}
+
+RigidBody& World::body(BodyId id) {
+  RigidBody& body = bodies_.at(id);
+  if (!isEdited_[id]) {
+    isEdited_[id] = 1;
+    edited_.push_back(id);
+  }
+  return body;
+}
+
+void World::updateActivity(BodyId id) {
+  const bool active = takesPart(id) && !bodies_[id].isStatic() && !asleep_[id];
+  if (active == static_cast<bool>(inActive_[id])) return;
+  inActive_[id] = active ? 1 : 0;
+  if (active) active_.push_back(id);
+  activeChanged_ = true;
+}
+
+const std::vector<BodyId>& World::activeBodies() {
+  if (!activeChanged_) return active_;
+  std::erase_if(active_, [this](BodyId id) { return !inActive_[id]; });
+  std::sort(active_.begin(), active_.end());
+  active_.erase(std::unique(active_.begin(), active_.end()), active_.end());
+  activeChanged_ = false;
+  return active_;
+}
+
+const MovableBodies& World::refreshMoving() {
+  for (const BodyId id : movable_.ids) movable_.flags[id] = false;
+  movable_.ids.clear();
+  moving_.clear();
+  for (const BodyId id : activeBodies()) {
+    if (!isMoving(id)) continue;
+    moving_.push_back(id);
+    if (bodies_[id].isDynamic()) {
+      movable_.flags[id] = true;
+      movable_.ids.push_back(id);
+    }
+  }
+  return movable_;
 }
 
 int World::threadCount() const { return tasks_->threadCount(); }
@@ -116,7 +161,7 @@ void World::step() {
   {
     const StageTimer timer(profile.forces);
     applyForces();  // gravity, user forces and impulses
-    solver_->beginStep(bodies_, movableBodies(), context);
+    solver_->beginStep(bodies_, refreshMoving(), context);
     freezeNonFiniteBodies();
   }
   {
@@ -133,12 +178,14 @@ void World::step() {
   solveContacts(context);  // responses, then positions
   const StageTimer timer(profile.afterSolve);
   moveKinematicBodies(context);
-  events_.update(solver_->eventContacts(contacts_), dormantPairs(), listener_);
+  events_.update(solver_->eventContacts(contacts_), [this](const BodyPair& pair) { return atRest(pair); },
+                 restChanged_, listener_);
   if (keepHistory_) history_.add(solver_->touchedPoints(contacts_));
   linkIslands();
   keepRestingContacts(updateSleep(context));
   freezeNonFiniteBodies();
   applyLifetimes(stepCount_ + 1);  // the state this step ends in has the bodies it should
+  restChanged_ = false;
   ++stepCount_;
 }
 
@@ -148,21 +195,38 @@ void World::step() {
 void World::wake(BodyId id) {
   if (!asleep_.at(id)) return;
   const BodyId island = island_[id];
-  for (BodyId member = 0; member < bodies_.size(); ++member)
+  const auto found = sleepingIslands_.find(island);
+  if (found == sleepingIslands_.end()) return;  // every sleeper is listed under its label
+  std::vector<BodyId> members = std::move(found->second);
+  sleepingIslands_.erase(found);
+  // In id order; a member listed twice, removed or asleep elsewhere since is
+  // no longer this island's.
+  std::sort(members.begin(), members.end());
+  for (const BodyId member : members)
     if (asleep_[member] && island_[member] == island) wakeBody(member);
 }
 
 void World::wakeBody(BodyId id) {
-  asleep_[id] = false;
+  setAsleep(id, false);
   slowTime_[id] = 0.0;
   if (proxies_[id] >= 0) broadPhase_->setProxyActive(proxies_[id], true);
+  updateActivity(id);
+  restChanged_ = true;
 }
 
 void World::putToSleep(BodyId id) {
-  asleep_[id] = true;
+  setAsleep(id, true);
+  sleepingIslands_[island_[id]].push_back(id);
   bodies_[id].setLinearVelocity(Vec3::Zero());
   bodies_[id].setAngularVelocity(Vec3::Zero());
   broadPhase_->setProxyActive(proxies_[id], false);
+  updateActivity(id);
+}
+
+void World::setAsleep(BodyId id, bool asleep) {
+  if (asleep_[id] == asleep) return;
+  asleep_[id] = asleep;
+  if (takesPart(id)) sleepingCount_ += asleep ? 1 : -1;
 }
 
 void World::sleep(BodyId id) {
@@ -220,27 +284,21 @@ void World::applyForces() {
   applyScheduledForces();
   wakePushedBodies();
   // Each awake body's forces become its step's accelerations on its own, in parallel.
-  tasks_->parallelFor(bodies_.size(), bodyGrain, [&](std::size_t begin, std::size_t end) {
-    for (auto id = static_cast<BodyId>(begin); id < end; ++id)
-      if (takesPart(id) && !bodies_[id].isStatic() && !asleep_[id]) bodies_[id].beginStep(settings_.gravity);
+  const std::vector<BodyId>& active = activeBodies();
+  tasks_->parallelFor(active.size(), bodyGrain, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) bodies_[active[k]].beginStep(settings_.gravity);
   });
-  for (BodyId id = 0; id < bodies_.size(); ++id) {
-    const RigidBody& body = bodies_[id];
-    if (!takesPart(id) || body.isStatic()) continue;
-    if (asleep_[id]) {
-      ++stats_.sleepingBodies;
-      continue;
-    }
-    ++stats_.awakeBodies;
-    if (body.hasLocks()) ++stats_.lockedBodies;
-  }
+  stats_.sleepingBodies = sleepingCount_;
+  stats_.awakeBodies = static_cast<int>(active.size());
+  for (const BodyId id : active)
+    if (bodies_[id].hasLocks()) ++stats_.lockedBodies;
 }
 
 // In the order they were scheduled, so sums are the same run after run.
 void World::applyScheduledForces() {
   for (const ScheduledForce& force : scheduledForces_) {
     if (stepCount_ < force.firstStep || stepCount_ >= force.endStep || !takesPart(force.body)) continue;
-    RigidBody& body = bodies_[force.body];
+    RigidBody& body = this->body(force.body);  // edited: a sleeping body wakes
     if (force.isTorque) body.addTorque(force.vector, force.mode);
     else if (force.at) body.addForceAtPoint(force.vector, *force.at, force.mode);
     else body.addForce(force.vector, force.mode);
@@ -259,6 +317,7 @@ void World::applyScheduledStates() {
     if (state.orientation) body.setOrientation(*state.orientation);
     if (state.linearVelocity) body.setLinearVelocity(*state.linearVelocity);
     if (state.angularVelocity) body.setAngularVelocity(*state.angularVelocity);
+    if (body.isKinematic()) restChanged_ = true;
     wake(state.body);
     if (state.position || state.orientation)
       broadPhase_->moveProxy(proxies_[state.body], body.collider().worldBounds(body.transform()), Vec3::Zero());
@@ -269,40 +328,37 @@ void World::applyScheduledStates() {
 // saw it at the start of the step with these velocities (sequential impulses
 // also move it through its substeps, so gaps to it stay true).
 void World::moveKinematicBodies(const StepContext& context) {
-  for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (!bodies_[id].isKinematic() || !isMoving(id)) continue;
+  for (const BodyId id : moving_) {
+    if (!bodies_[id].isKinematic()) continue;
     BodyMotion motion = bodies_[id].motion();
     integratePosition(motion, context.dt);
     bodies_[id].setMotion(motion);
   }
 }
 
-// A sleeping body that was pushed or given a velocity wakes up.
+// A sleeping body that was pushed or given a velocity wakes up. Only an
+// edited body (body(id), a scheduled force) can have been: the others are
+// as they fell asleep. A kinematic body's new motion may end a rest.
 void World::wakePushedBodies() {
-  for (BodyId id = 0; id < bodies_.size(); ++id) {
+  std::sort(edited_.begin(), edited_.end());
+  for (const BodyId id : edited_) {
     const RigidBody& body = bodies_[id];
+    if (body.isKinematic()) restChanged_ = true;
     if (!asleep_[id] || frozen_[id]) continue;
     if (body.hasPendingForces() || body.linearVelocity() != Vec3::Zero() || body.angularVelocity() != Vec3::Zero())
       wake(id);
   }
 }
 
-const std::vector<bool>& World::movableBodies() {
-  movable_.resize(bodies_.size());
-  for (BodyId id = 0; id < bodies_.size(); ++id) movable_[id] = isPushable(id);
-  return movable_;
-}
-
 // Each moving body's box is predicted in parallel; the broad phase's edits
 // stay serial, in body order, so the tree is the same for any thread count.
 void World::updateBroadPhase(const StepContext& context) {
   predictions_.resize(bodies_.size());
-  tasks_->parallelFor(bodies_.size(), bodyGrain, [&](std::size_t begin, std::size_t end) {
-    for (auto id = static_cast<BodyId>(begin); id < end; ++id)
-      if (isMoving(id)) predictions_[id] = solver_->predictMotion(bodies_[id], context);
+  tasks_->parallelFor(moving_.size(), bodyGrain, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) predictions_[moving_[k]] = solver_->predictMotion(bodies_[moving_[k]], context);
   });
-  for (BodyId id = 0; id < bodies_.size(); ++id)
-    if (isMoving(id)) broadPhase_->moveProxy(proxies_[id], predictions_[id].box, predictions_[id].displacement);
+  for (const BodyId id : moving_)
+    broadPhase_->moveProxy(proxies_[id], predictions_[id].box, predictions_[id].displacement);
 }
 
 void World::findContacts(const StepContext& context) {
@@ -374,15 +430,22 @@ World::PairOutcome World::answerPair(const BodyPair& pair, const StepContext& co
 // the passes of a step, but a pass after a wake has other pairs, so each pass
 // measures anew.
 void World::measureBodies(const StepContext& context) {
-  inSomePair_.assign(bodies_.size(), 0);
-  for (const BodyPair& pair : pairs_) inSomePair_[pair.a] = inSomePair_[pair.b] = 1;
+  inSomePair_.resize(bodies_.size(), 0);
+  for (const BodyId id : pairBodies_) inSomePair_[id] = 0;
+  pairBodies_.clear();
+  for (const BodyPair& pair : pairs_)
+    for (const BodyId id : {pair.a, pair.b})
+      if (!inSomePair_[id]) {
+        inSomePair_[id] = 1;
+        pairBodies_.push_back(id);
+      }
   tightBounds_.resize(bodies_.size());
   bodyReaches_.resize(bodies_.size());
   reachBounds_.resize(bodies_.size());
   dynamicInPair_.resize(bodies_.size());
-  tasks_->parallelFor(bodies_.size(), bodyGrain, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t id = begin; id < end; ++id) {
-      if (!inSomePair_[id]) continue;
+  tasks_->parallelFor(pairBodies_.size(), bodyGrain, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const BodyId id = pairBodies_[k];
       dynamicInPair_[id] = bodies_[id].isDynamic() ? 1 : 0;
       tightBounds_[id] = bodies_[id].collider().worldBounds(bodies_[id].transform());
       bodyReaches_[id] = solver_->bodyReach(bodies_[id], context);
@@ -628,7 +691,7 @@ void World::solveContacts(const StepContext& context) {
   SolverStepReport report;
   {
     const StageTimer timer(stats_.profile.solver);
-    report = solver_->solve(bodies_, movableBodies(), contacts_, context);
+    report = solver_->solve(bodies_, refreshMoving(), contacts_, context);
   }
   stats_.profile.solverIslands = report.islandSeconds;
   stats_.responses = report.responses;
@@ -637,32 +700,24 @@ void World::solveContacts(const StepContext& context) {
   stats_.contactHertz = report.contactHertz;
 }
 
-// Pairs that were touching and whose bodies are now all asleep (or static):
-// they still touch, silently.
-std::vector<BodyPair> World::dormantPairs() const {
-  std::vector<BodyPair> dormant;
-  if (std::find(asleep_.begin(), asleep_.end(), true) == asleep_.end()) return dormant;  // an awake world
-  const std::vector<Stillness> still = stillness();
-  for (const BodyPair& pair : events_.touchingPairs())
-    if (atRest(still, pair)) dormant.push_back(pair);
-  return dormant;
-}
-
 // Islands: awake bodies joined by this step's touching contacts. Static,
 // sleeping and frozen bodies do not link, so piles resting on one floor stay
 // apart. Each body is labelled with its island's lowest id; a sleeping body
 // keeps the label it fell asleep with, which is what wake() follows.
+// Bodies are numbered by their rank among the movable ones (ascending, so a
+// set's root, its lowest rank, is its lowest id).
 void World::linkIslands() {
-  DisjointSets sets(bodies_.size());
+  const std::vector<BodyId>& ids = movable_.ids;
+  islandRank_.resize(bodies_.size());
+  for (std::size_t k = 0; k < ids.size(); ++k) islandRank_[ids[k]] = static_cast<BodyId>(k);
+  DisjointSets sets(ids.size());
   for (const Contact& contact : contacts_)
-    if (isPushable(contact.a) && isPushable(contact.b)) sets.unite(contact.a, contact.b);
-  for (BodyId id = 0; id < bodies_.size(); ++id)
-    if (isPushable(id)) island_[id] = sets.find(id);
+    if (movable_[contact.a] && movable_[contact.b]) sets.unite(islandRank_[contact.a], islandRank_[contact.b]);
+  for (std::size_t k = 0; k < ids.size(); ++k) island_[ids[k]] = ids[sets.find(static_cast<std::uint32_t>(k))];
 }
 
 void World::updateSlowTimes(const StepContext& context) {
-  for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (!isPushable(id)) continue;
+  for (const BodyId id : movable_.ids) {
     const RigidBody& body = bodies_[id];
     const bool slow = body.linearVelocity().norm() < settings_.sleepLinearSpeed &&
                       body.angularVelocity().norm() < settings_.sleepAngularSpeed;
@@ -677,12 +732,15 @@ void World::updateSlowTimes(const StepContext& context) {
 bool World::updateSleep(const StepContext& context) {
   updateSlowTimes(context);
   if (!settings_.allowSleep) return false;
-  std::vector<double> islandSlowTime(bodies_.size(), std::numeric_limits<double>::infinity());
-  for (BodyId id = 0; id < bodies_.size(); ++id)
-    if (isPushable(id)) islandSlowTime[island_[id]] = std::min(islandSlowTime[island_[id]], slowTime_[id]);
+  const std::vector<BodyId>& ids = movable_.ids;
+  std::vector<double> islandSlowTime(ids.size(), std::numeric_limits<double>::infinity());  // by the root's rank
+  for (const BodyId id : ids) {
+    double& slowest = islandSlowTime[islandRank_[island_[id]]];
+    slowest = std::min(slowest, slowTime_[id]);
+  }
   bool fellAsleep = false;
-  for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (!isPushable(id) || islandSlowTime[island_[id]] < settings_.timeToSleep) continue;
+  for (const BodyId id : ids) {
+    if (islandSlowTime[islandRank_[island_[id]]] < settings_.timeToSleep) continue;
     putToSleep(id);
     fellAsleep = true;
   }
@@ -692,10 +750,12 @@ bool World::updateSleep(const StepContext& context) {
 void World::removeBody(BodyId id) {
   if (id >= bodies_.size()) throw std::invalid_argument("no body " + std::to_string(id));
   if (!present_[id]) return;
+  setAsleep(id, false);
   present_[id] = false;
-  asleep_[id] = false;
   slowTime_[id] = 0.0;
   island_[id] = id;
+  updateActivity(id);
+  restChanged_ = true;
   if (proxies_[id] >= 0) broadPhase_->removeProxy(proxies_[id]);
   proxies_[id] = -1;
   // What rested on it falls: its neighbours wake with their islands.
@@ -710,6 +770,7 @@ void World::restoreBody(BodyId id) {
   if (present_[id]) return;
   present_[id] = true;
   if (frozen_[id]) return;  // a non-finite body stays out of the broad phase
+  updateActivity(id);
   const RigidBody& body = bodies_[id];
   proxies_[id] = broadPhase_->addProxy(body.collider().worldBounds(body.transform()), id,
                                        body.isStatic() ? ProxyMotion::Static : ProxyMotion::Dynamic);
@@ -743,13 +804,25 @@ void World::applyLifetimes(int state) {
 // A non-finite body is reported with the step it happened on, then frozen and
 // taken out of the broad phase: it cannot poison the tree or other bodies.
 void World::freezeNonFiniteBodies() {
-  for (BodyId id = 0; id < bodies_.size(); ++id) {
+  std::vector<BodyId> checked = activeBodies();
+  if (!edited_.empty()) {
+    checked.insert(checked.end(), edited_.begin(), edited_.end());
+    std::sort(checked.begin(), checked.end());
+    checked.erase(std::unique(checked.begin(), checked.end()), checked.end());
+    for (const BodyId id : edited_) isEdited_[id] = 0;
+    edited_.clear();
+  }
+  for (const BodyId id : checked) {
     if (frozen_[id] || bodies_[id].hasFiniteState()) continue;
+    if (asleep_[id] && present_[id]) --sleepingCount_;
     frozen_[id] = true;
+    updateActivity(id);
+    restChanged_ = true;
     if (proxies_[id] >= 0) broadPhase_->removeProxy(proxies_[id]);
     proxies_[id] = -1;
     faults_.push_back({id, stepCount_ + 1, "position, orientation or velocity became NaN or Inf"});
   }
+  if (restChanged_ && !moving_.empty()) refreshMoving();  // a frozen body moves no more this step
 }
 
 }  // namespace physdbg

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "debugdraw/primitives.h"
@@ -153,7 +154,10 @@ class World {
   BodyId addBody(const BodyDefinition& definition);
 
   std::size_t bodyCount() const { return bodies_.size(); }
-  RigidBody& body(BodyId id) { return bodies_.at(id); }
+  // What is changed through this reference reaches the next step: a sleeping
+  // body given a velocity or a force wakes, one made non-finite is frozen.
+  // (The step visits only awake bodies and the bodies handed out here.)
+  RigidBody& body(BodyId id);
   const RigidBody& body(BodyId id) const { return bodies_.at(id); }
   const std::vector<RigidBody>& bodies() const { return bodies_; }
 
@@ -249,7 +253,12 @@ class World {
   void applyScheduledStates();
   void wakePushedBodies();
   void moveKinematicBodies(const StepContext& context);
-  const std::vector<bool>& movableBodies();
+  // The bodies a step visits (active_): present, finite, not static and not
+  // asleep, so sleeping and static bodies cost nothing. Kept ascending.
+  void updateActivity(BodyId id);
+  const std::vector<BodyId>& activeBodies();
+  // moving_ and movable_ from the active bodies, as isMoving and isPushable say now.
+  const MovableBodies& refreshMoving();
   void updateBroadPhase(const StepContext& context);
   void findContacts(const StepContext& context);
   // Candidate pairs in two parallel passes, gathered in pair order
@@ -292,25 +301,19 @@ class World {
   bool wakeTouchedBodies(const StepContext& context);  // true when a body woke
   bool closesOnSleeper(const ContactManifold& manifold, BodyId mover, const StepContext& context) const;
   void solveContacts(const StepContext& context);
-  std::vector<BodyPair> dormantPairs() const;
   std::vector<ShownContact> initialContacts() const;
   std::vector<BodyPair> overlappingBoxes(double margin) const;
   void keepRestingContacts(bool fellAsleep);
-  // Per body: whether it takes part and is not moving, and whether it sleeps;
-  // a pair is at rest when both are still and one sleeps. Worked out once a
-  // pass: a sleeping world asks it of every resting contact each step.
-  enum class Stillness : char { moving, awake, asleep };
-  std::vector<Stillness> stillness() const;
-  static bool atRest(const std::vector<Stillness>& still, const BodyPair& pair) {
-    const Stillness a = still[pair.a], b = still[pair.b];
-    return a != Stillness::moving && b != Stillness::moving && (a == Stillness::asleep || b == Stillness::asleep);
-  }
+  // Both bodies take part and do not move, and one sleeps: the pair touches
+  // silently (contact events, the points sleeping bodies rest on).
+  bool atRest(const BodyPair& pair) const;
   void linkIslands();
   void updateSlowTimes(const StepContext& context);
   bool updateSleep(const StepContext& context);  // true when an island fell asleep
-  void freezeNonFiniteBodies();
+  void freezeNonFiniteBodies();  // the active bodies and the edited ones
   void applyLifetimes(int state);  // add and remove what the lifetimes say for `state`
   void putToSleep(BodyId id);
+  void setAsleep(BodyId id, bool asleep);  // the flag and the count of sleepers
   void wakeBody(BodyId id);  // this body only; wake() wakes its island
   std::vector<std::shared_ptr<const debugdraw::TriangleMesh>> hullMeshes() const;
   // Moves this step: a dynamic body awake and finite, or a kinematic body
@@ -356,7 +359,22 @@ class World {
   std::vector<StaticRowCounts> staticRows_;   // per body, this pass (testStaticPairs)
   std::vector<Contact> contacts_;  // this step's touching pairs
   std::unique_ptr<ContactSolver> solver_;
-  std::vector<bool> movable_;  // isMoving, per body, when last asked (movableBodies)
+  std::vector<char> inActive_;     // per body: listed in active_ (updateActivity)
+  std::vector<BodyId> active_;     // ascending once activeBodies() sorted it
+  bool activeChanged_ = false;     // active_ needs compacting and sorting
+  std::vector<BodyId> moving_;     // active bodies that move this step, ascending (refreshMoving)
+  MovableBodies movable_;          // the dynamic ones among them (refreshMoving)
+  std::vector<BodyId> islandRank_;  // per movable body: its rank in movable_.ids (linkIslands)
+  std::vector<BodyId> edited_;     // handed out by body(id) since the last step
+  std::vector<char> isEdited_;     // per body: in edited_
+  std::vector<BodyId> pairBodies_;  // bodies in a candidate pair, this pass (measureBodies)
+  int sleepingCount_ = 0;          // present, finite sleeping bodies
+  // The members of each sleeping island, by its label (islandOf): a wake
+  // visits its island, not the world.
+  std::unordered_map<BodyId, std::vector<BodyId>> sleepingIslands_;
+  // A body woke, left, froze or a kinematic body's motion was set since the
+  // last step ended: pairs at rest may no longer be.
+  bool restChanged_ = false;
   ContactEventTracker events_;
   ContactHistory history_;
   bool keepHistory_ = false;

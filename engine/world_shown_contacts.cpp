@@ -20,25 +20,20 @@ std::vector<ShownContact> World::shownContacts() const {
   return points;
 }
 
-std::vector<World::Stillness> World::stillness() const {
-  std::vector<Stillness> still(bodies_.size());
-  for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (!takesPart(id) || isMoving(id)) still[id] = Stillness::moving;
-    else still[id] = asleep_[id] ? Stillness::asleep : Stillness::awake;
-  }
-  return still;
+bool World::atRest(const BodyPair& pair) const {
+  const auto still = [this](BodyId id) { return takesPart(id) && !isMoving(id); };
+  return still(pair.a) && still(pair.b) && (asleep_[pair.a] || asleep_[pair.b]);
 }
 
 // Sleeping proxies make no pairs, so no step recomputes what a sleeping body
 // rests on: its points are taken from the step that put it to sleep and
-// dropped when a body of the pair wakes.
+// dropped when a body of the pair wakes (only then are they looked at).
 void World::keepRestingContacts(bool fellAsleep) {
   if (resting_.empty() && !fellAsleep) return;  // an awake world: nothing to keep
-  const std::vector<Stillness> still = stillness();
-  std::erase_if(resting_, [&](const ShownContact& point) { return !atRest(still, point.pair); });
+  if (restChanged_) std::erase_if(resting_, [&](const ShownContact& point) { return !atRest(point.pair); });
   if (!fellAsleep) return;
   std::vector<ShownContact> fresh = solver_->touchedPoints(contacts_);
-  std::erase_if(fresh, [&](const ShownContact& point) { return !atRest(still, point.pair); });
+  std::erase_if(fresh, [&](const ShownContact& point) { return !atRest(point.pair); });
   for (ShownContact& point : fresh) point.resting = true;
   resting_ = mergeContacts(std::move(fresh), resting_);
 }

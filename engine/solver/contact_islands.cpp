@@ -23,12 +23,23 @@ void countsToStarts(std::vector<std::uint32_t>& counts) {
 // Two passes, counting then filling each island's run in place.
 void buildContactIslands(const std::vector<ContactManifold>& manifolds, const std::vector<bool>& movable,
                          ContactIslands& islands) {
-  DisjointSets sets(movable.size());
+  std::vector<std::uint32_t>& linked = islands.linked_;
+  linked.clear();
   for (const ContactManifold& manifold : manifolds)
-    if (movable[manifold.a] && movable[manifold.b]) sets.unite(manifold.a, manifold.b);
-  islands.islandOf_.assign(movable.size(), none);  // by root body
+    for (std::uint32_t id : {manifold.a, manifold.b})
+      if (movable[id]) linked.push_back(id);
+  std::sort(linked.begin(), linked.end());
+  linked.erase(std::unique(linked.begin(), linked.end()), linked.end());
+  islands.localOf_.resize(movable.size());
+  for (std::uint32_t k = 0; k < linked.size(); ++k) islands.localOf_[linked[k]] = k;
+  const auto local = [&](std::uint32_t id) { return islands.localOf_[id]; };
+  // Ranks keep the id order, so a set's root (its lowest rank) is its lowest id.
+  DisjointSets sets(linked.size());
+  for (const ContactManifold& manifold : manifolds)
+    if (movable[manifold.a] && movable[manifold.b]) sets.unite(local(manifold.a), local(manifold.b));
+  islands.islandOf_.assign(linked.size(), none);  // by root
   islands.manifoldIsland_.assign(manifolds.size(), none);
-  islands.listed_.assign(movable.size(), 0);
+  islands.listed_.assign(linked.size(), 0);
   std::vector<std::uint32_t>& manifoldStarts = islands.manifoldStarts_;
   std::vector<std::uint32_t>& bodyStarts = islands.bodyStarts_;
   manifoldStarts.clear();
@@ -37,7 +48,7 @@ void buildContactIslands(const std::vector<ContactManifold>& manifolds, const st
     const ContactManifold& manifold = manifolds[m];
     const std::uint32_t body = movable[manifold.a] ? manifold.a : manifold.b;
     if (!movable[body]) continue;
-    const std::uint32_t root = sets.find(body);
+    const std::uint32_t root = sets.find(local(body));
     std::uint32_t& island = islands.islandOf_[root];
     if (island == none) {
       island = static_cast<std::uint32_t>(manifoldStarts.size());
@@ -47,8 +58,8 @@ void buildContactIslands(const std::vector<ContactManifold>& manifolds, const st
     islands.manifoldIsland_[m] = island;
     ++manifoldStarts[island];
     for (std::uint32_t id : {manifold.a, manifold.b}) {
-      if (!movable[id] || islands.listed_[id]) continue;
-      islands.listed_[id] = 1;
+      if (!movable[id] || islands.listed_[local(id)]) continue;
+      islands.listed_[local(id)] = 1;
       ++bodyStarts[island];
     }
   }
@@ -65,8 +76,8 @@ void buildContactIslands(const std::vector<ContactManifold>& manifolds, const st
     if (island == none) continue;
     islands.manifolds_[islands.manifoldFill_[island]++] = m;
     for (std::uint32_t id : {manifolds[m].a, manifolds[m].b}) {
-      if (!movable[id] || !islands.listed_[id]) continue;
-      islands.listed_[id] = 0;
+      if (!movable[id] || !islands.listed_[local(id)]) continue;
+      islands.listed_[local(id)] = 0;
       islands.bodies_[islands.bodyFill_[island]++] = id;
     }
   }

@@ -35,7 +35,11 @@ class ContactIslands {
   std::vector<std::uint32_t> manifolds_, bodies_;
   std::vector<std::uint32_t> manifoldStarts_, bodyStarts_;  // island i's run, then the end
   // Scratch of the build, kept for its capacity.
+  // Bodies are numbered by their rank among the manifolds' movable ones
+  // (localOf_, per body, written only for those), so a build costs what its
+  // manifolds cost, whatever the number of bodies.
   std::vector<std::uint32_t> islandOf_, manifoldIsland_, manifoldFill_, bodyFill_;
+  std::vector<std::uint32_t> linked_, localOf_;
   std::vector<char> listed_;
 };
 

@@ -6,6 +6,7 @@
 // body's proxy box reaches, how far apart a pair still matters, what counts
 // as touching, what it keeps between steps (warm starting) and which points
 // the debugger shows. makeContactSolver is the one place that picks one.
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -53,14 +54,21 @@ struct BodyReach {
   double spin = 0.0;                   // m/s: angular speed times the body's bounding radius
 };
 
+// The bodies a step moves (dynamic, awake and finite), as a flag per body
+// and as an ascending list: a solver visits the list, never every body, so
+// sleeping and static bodies cost it nothing.
+struct MovableBodies {
+  std::vector<bool> flags;          // per body
+  std::vector<std::uint32_t> ids;   // the flagged bodies, ascending
+  bool operator[](std::size_t id) const { return flags[id]; }
+};
+
 class ContactSolver {
  public:
   virtual ~ContactSolver() = default;
 
-  // `movable[i]`: body i is dynamic, awake and finite this step. Called after
-  // forces were applied, before the broad phase.
-  virtual void beginStep(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-                         const StepContext& step) = 0;
+  // Called after forces were applied, before the broad phase.
+  virtual void beginStep(std::vector<RigidBody>& bodies, const MovableBodies& movable, const StepContext& step) = 0;
   virtual PredictedMotion predictMotion(const RigidBody& body, const StepContext& step) const = 0;
   // How far apart two surfaces may be and still be handed to addCandidate.
   // It comes from what each body alone contributes (bodyReach), which World
@@ -97,7 +105,7 @@ class ContactSolver {
 
   // Solves `contacts` (the touching ones) or the kept candidates, and moves
   // every movable body to the end of the step.
-  virtual SolverStepReport solve(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+  virtual SolverStepReport solve(std::vector<RigidBody>& bodies, const MovableBodies& movable,
                                  const std::vector<Contact>& contacts, const StepContext& step) = 0;
 
   // The pairs contact events report as touching, in pair order: `contacts`,

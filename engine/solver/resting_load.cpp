@@ -21,15 +21,21 @@ struct Support {
 };
 
 // Every manifold on which a movable body rests, grouped by that body
-// (counting sort, so one flat array serves all bodies).
+// (counting sort, so one flat array serves all bodies). Bodies are numbered
+// by their rank among the supported ones: the table costs what the
+// manifolds cost, however many bodies the world holds.
 struct SupportTable {
   std::vector<Support> supports;
-  std::vector<std::uint32_t> first;  // supports of body i: [first[i], first[i + 1])
+  std::vector<std::uint32_t> bodies;  // the supported bodies, ascending
+  std::vector<std::uint32_t> first;   // supports of bodies[k]: [first[k], first[k + 1])
+  std::size_t rank(std::uint32_t id) const {
+    return static_cast<std::size_t>(std::lower_bound(bodies.begin(), bodies.end(), id) - bodies.begin());
+  }
+  bool holds(std::size_t k, std::uint32_t id) const { return k < bodies.size() && bodies[k] == id; }
 };
 
-SupportTable findSupports(std::size_t bodyCount, const std::vector<bool>& movable,
-                          const std::vector<ContactManifold>& manifolds, const std::vector<double>& touching,
-                          const Vec3& up) {
+SupportTable findSupports(const std::vector<bool>& movable, const std::vector<ContactManifold>& manifolds,
+                          const std::vector<double>& touching, const Vec3& up) {
   std::vector<Support> found;
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
     const ContactManifold& manifold = manifolds[m];
@@ -41,12 +47,19 @@ SupportTable findSupports(std::size_t bodyCount, const std::vector<bool>& movabl
       found.push_back({manifold.a, manifold.b, m, -cosine});
   }
   SupportTable table;
-  table.first.assign(bodyCount + 1, 0);
-  for (const Support& support : found) ++table.first[support.supported + 1];
-  for (std::size_t i = 0; i < bodyCount; ++i) table.first[i + 1] += table.first[i];
+  for (const Support& support : found) table.bodies.push_back(support.supported);
+  std::sort(table.bodies.begin(), table.bodies.end());
+  table.bodies.erase(std::unique(table.bodies.begin(), table.bodies.end()), table.bodies.end());
+  std::vector<std::uint32_t> ranks(found.size());
+  table.first.assign(table.bodies.size() + 1, 0);
+  for (std::size_t s = 0; s < found.size(); ++s) {
+    ranks[s] = static_cast<std::uint32_t>(table.rank(found[s].supported));
+    ++table.first[ranks[s] + 1];
+  }
+  for (std::size_t k = 0; k < table.bodies.size(); ++k) table.first[k + 1] += table.first[k];
   table.supports.resize(found.size());
   std::vector<std::uint32_t> next(table.first.begin(), table.first.end() - 1);
-  for (const Support& support : found) table.supports[next[support.supported]++] = support;
+  for (std::size_t s = 0; s < found.size(); ++s) table.supports[next[ranks[s]]++] = found[s];
   return table;
 }
 
@@ -57,27 +70,30 @@ std::vector<double> restingLoads(const std::vector<RigidBody>& bodies, const std
                                  const Vec3& up, const std::vector<std::pair<double, double>>* massScales) {
   std::vector<double> manifoldLoad(manifolds.size(), 0.0);
   if (manifolds.empty()) return manifoldLoad;
-  const SupportTable table = findSupports(bodies.size(), movable, manifolds, touching, up);
+  const SupportTable table = findSupports(movable, manifolds, touching, up);
   // Highest first, each body's height measured once; ties keep id order, so
   // the walk is deterministic.
-  std::vector<std::pair<double, std::uint32_t>> order;
-  for (std::uint32_t id = 0; id < bodies.size(); ++id)
-    if (table.first[id + 1] > table.first[id]) order.emplace_back(bodies[id].position().dot(up), id);
+  std::vector<std::pair<double, std::uint32_t>> order;  // height, rank
+  for (std::uint32_t k = 0; k < table.bodies.size(); ++k) order.emplace_back(bodies[table.bodies[k]].position().dot(up), k);
   std::stable_sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
-  std::vector<double> carried(bodies.size(), 0.0);
-  for (const auto& [height, id] : order) {
-    const std::uint32_t begin = table.first[id], end = table.first[id + 1];
-    const double share = (carried[id] + bodies[id].mass()) / static_cast<double>(end - begin);
+  // What each supported body carries; a supporter that rests on nothing
+  // passes no load on, so only supported bodies need a slot.
+  std::vector<double> carried(table.bodies.size(), 0.0);
+  for (const auto& [height, k] : order) {
+    const std::uint32_t begin = table.first[k], end = table.first[k + 1];
+    const double share = (carried[k] + bodies[table.bodies[k]].mass()) / static_cast<double>(end - begin);
     for (std::uint32_t s = begin; s < end; ++s) {
       const Support& support = table.supports[s];
       manifoldLoad[support.manifold] += share / support.cosine;
       if (!movable[support.supporter]) continue;
+      const std::size_t supporter = table.rank(support.supporter);
+      if (!table.holds(supporter, support.supporter)) continue;
       double reaching = 1.0;
       if (massScales) {
         const auto& [scaleA, scaleB] = (*massScales)[support.manifold];
         reaching = support.supporter == manifolds[support.manifold].a ? scaleA : scaleB;
       }
-      carried[support.supporter] += share * reaching;
+      carried[supporter] += share * reaching;
     }
   }
   return manifoldLoad;

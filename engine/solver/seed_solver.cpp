@@ -58,11 +58,10 @@ SeedSolver::SeedSolver(const SolverSettings& settings, double touchingTolerance)
 
 // The gyroscopic spin each body's velocity integration leaves is kept until
 // its position moves in solve; a body woken in between keeps a zero one.
-void SeedSolver::beginStep(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-                           const StepContext& step) {
-  motions_.assign(bodies.size(), BodyMotion{});
-  for (std::size_t id = 0; id < bodies.size(); ++id) {
-    if (!movable[id]) continue;
+void SeedSolver::beginStep(std::vector<RigidBody>& bodies, const MovableBodies& movable, const StepContext& step) {
+  motions_.resize(bodies.size());
+  begun_ = movable.ids;
+  for (const std::uint32_t id : movable.ids) {
     motions_[id] = bodies[id].motion();
     integrateVelocity(motions_[id], bodies[id].motionProperties(), step.dt);
     bodies[id].setMotion(motions_[id]);
@@ -77,13 +76,17 @@ PredictedMotion SeedSolver::predictMotion(const RigidBody& body, const StepConte
 
 // Contacts never involve frozen bodies: their proxies leave the broad phase
 // before it runs.
-SolverStepReport SeedSolver::solve(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+SolverStepReport SeedSolver::solve(std::vector<RigidBody>& bodies, const MovableBodies& movable,
                                    const std::vector<Contact>& contacts, const StepContext& step) {
   SolverStepReport report;
   for (const Contact& contact : contacts)
     if (respondToContact(bodies[contact.a], bodies[contact.b], contact.result, settings_)) ++report.responses;
-  for (std::size_t id = 0; id < bodies.size(); ++id)
-    if (movable[id]) moveBody(bodies[id], motions_[id], step.dt);
+  std::size_t begun = 0;
+  for (const std::uint32_t id : movable.ids) {
+    while (begun < begun_.size() && begun_[begun] < id) ++begun;
+    const bool integrated = begun < begun_.size() && begun_[begun] == id;
+    moveBody(bodies[id], integrated ? motions_[id] : BodyMotion{}, step.dt);
+  }
   return report;
 }
 

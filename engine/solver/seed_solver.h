@@ -19,7 +19,7 @@ class SeedSolver final : public ContactSolver {
  public:
   SeedSolver(const SolverSettings& settings, double touchingTolerance);
 
-  void beginStep(std::vector<RigidBody>& bodies, const std::vector<bool>& movable, const StepContext& step) override;
+  void beginStep(std::vector<RigidBody>& bodies, const MovableBodies& movable, const StepContext& step) override;
   PredictedMotion predictMotion(const RigidBody& body, const StepContext& step) const override;
   BodyReach bodyReach(const RigidBody&, const StepContext&) const override { return {}; }
   double contactReach(const BodyReach&, const BodyReach&, const StepContext&) const override { return reach_; }
@@ -27,7 +27,7 @@ class SeedSolver final : public ContactSolver {
   double touchingGap() const override { return 0.0; }
   void clearContacts() override {}
   int addCandidate(const Contact&, const RigidBody&, const RigidBody&, double) override { return 0; }
-  SolverStepReport solve(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+  SolverStepReport solve(std::vector<RigidBody>& bodies, const MovableBodies& movable,
                          const std::vector<Contact>& contacts, const StepContext& step) override;
   const std::vector<Contact>& eventContacts(const std::vector<Contact>& contacts) override { return contacts; }
   std::vector<ShownContact> touchedPoints(const std::vector<Contact>& contacts) const override;
@@ -38,6 +38,7 @@ class SeedSolver final : public ContactSolver {
 
   SolverSettings settings_;
   std::vector<BodyMotion> motions_;  // per body: this step's velocity half
+  std::vector<std::uint32_t> begun_;  // the bodies beginStep integrated, ascending
   double reach_;  // the narrow phase's touching tolerance: only touching pairs matter
   std::vector<ContactManifold> noManifolds_;
 };

@@ -221,7 +221,7 @@ double SequentialImpulseSolver::reachShare(const BodyReach& body, const StepCont
   return 2.0 * settings_.linearSlop + (body.linearVelocity.norm() + body.acceleration * step.dt + body.spin) * step.dt;
 }
 
-void SequentialImpulseSolver::beginStep(std::vector<RigidBody>&, const std::vector<bool>&, const StepContext&) {
+void SequentialImpulseSolver::beginStep(std::vector<RigidBody>&, const MovableBodies&, const StepContext&) {
   std::swap(previousManifolds_, manifolds_);
   retireManifolds();
 }
@@ -244,7 +244,7 @@ int SequentialImpulseSolver::addCandidate(const Contact& contact, const RigidBod
   return manifold.pointCount;
 }
 
-SolverStepReport SequentialImpulseSolver::solve(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+SolverStepReport SequentialImpulseSolver::solve(std::vector<RigidBody>& bodies, const MovableBodies& movable,
                                                 const std::vector<Contact>&, const StepContext& step) {
   if (settings_.warmStarting) warmStartFromPreviousStep(step);
   SolverStepReport report = solveManifolds(bodies, movable, manifolds_, step);
@@ -382,10 +382,11 @@ std::vector<ShownContact> SequentialImpulseSolver::touchedPoints(const std::vect
 }
 
 SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>& bodies,
-                                                         const std::vector<bool>& movable,
+                                                         const MovableBodies& movableBodies,
                                                          std::vector<ContactManifold>& manifolds,
                                                          const StepContext& step) {
   tasks_ = step.tasks;
+  const std::vector<bool>& movable = movableBodies.flags;
   prepare(bodies, movable, manifolds, step.dt);
   prepareApproaches(bodies, manifolds, step.gravity, step.dt);
   const double g = step.gravity.norm();
@@ -428,13 +429,15 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
     report.substeps = std::max(report.substeps, island.count);
     report.contactHertz = std::max(report.contactHertz, island.contactHertz);
   }
-  std::vector<bool> inIsland(bodies.size(), false);
+  inBatch_.resize(bodies.size(), 0);
   for (const IslandWork& batch : batches) {
-    for (std::uint32_t id : batch.bodies) inIsland[id] = true;
+    for (std::uint32_t id : batch.bodies) inBatch_[id] = 1;
     report.largestPenetration = std::max(report.largestPenetration, batch.largestPenetration);
   }
   const SubstepContext base = flightSubsteps(step);
-  integrateFreeBodies(bodies, movable, inIsland, base);
+  integrateFreeBodies(bodies, movableBodies, base);
+  for (const IslandWork& batch : batches)
+    for (std::uint32_t id : batch.bodies) inBatch_[id] = 0;
   if (report.substeps == 0) {
     report.substeps = base.count;
     report.contactHertz = base.contactHertz;
@@ -452,10 +455,11 @@ SubstepContext SequentialImpulseSolver::flightSubsteps(const StepContext& step) 
 }
 
 // Bodies in no manifold take the base substeps: integration alone.
-void SequentialImpulseSolver::integrateFreeBodies(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-                                                  const std::vector<bool>& inIsland, const SubstepContext& substeps) {
-  forEach(bodies.size(), 256, [&](std::size_t i) {
-    if (!movable[i] || inIsland[i]) return;
+void SequentialImpulseSolver::integrateFreeBodies(std::vector<RigidBody>& bodies, const MovableBodies& movable,
+                                                  const SubstepContext& substeps) {
+  forEach(movable.ids.size(), 256, [&](std::size_t k) {
+    const std::uint32_t i = movable.ids[k];
+    if (inBatch_[i]) return;
     BodyMotion motion = bodies[i].motion();
     const MotionProperties properties = bodies[i].motionProperties();
     for (int substep = 0; substep < substeps.count; ++substep) {
@@ -633,11 +637,9 @@ bool SequentialImpulseSolver::restsTogether(const std::vector<ContactManifold>& 
 
 // A body in contact that begins a step slower than calmSpeed, its spin's
 // rim speed included, adds the step to its calm time; any other starts again.
-void SequentialImpulseSolver::updateCalmTime(std::size_t id, double dt) {
-  if (!listed_[id]) {
-    calmTime_[id] = 0.0;
-    return;
-  }
+void SequentialImpulseSolver::updateCalmTime(std::uint32_t id, double dt) {
+  if (calmSolve_[id] + 1 != solveCount_) calmTime_[id] = 0.0;
+  calmSolve_[id] = solveCount_;
   const SolverBody& body = solverBodies_[id];
   const double speed = body.motion.linearVelocity.norm() + body.motion.angularVelocity.norm() * body.size;
   calmTime_[id] = speed <= settings_.calmSpeed ? calmTime_[id] + dt : 0.0;
@@ -794,13 +796,20 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
   startVelocities_.resize(bodies.size());
   impactVelocities_.resize(bodies.size());
   calmTime_.resize(bodies.size(), 0.0);
-  listed_.assign(bodies.size(), 0);
-  for (const ContactManifold& manifold : manifolds) listed_[manifold.a] = listed_[manifold.b] = 1;
-  forEach(bodies.size(), 256, [&](std::size_t id) {
-    if (!listed_[id]) {
-      updateCalmTime(id, dt);
-      return;
-    }
+  calmSolve_.resize(bodies.size(), 0);
+  ++solveCount_;
+  listed_.resize(bodies.size(), 0);
+  for (std::uint32_t id : listedIds_) listed_[id] = 0;
+  listedIds_.clear();
+  for (const ContactManifold& manifold : manifolds)
+    for (std::uint32_t id : {manifold.a, manifold.b})
+      if (!listed_[id]) {
+        listed_[id] = 1;
+        listedIds_.push_back(id);
+      }
+  std::sort(listedIds_.begin(), listedIds_.end());
+  forEach(listedIds_.size(), 256, [&](std::size_t k) {
+    const std::uint32_t id = listedIds_[k];
     SolverBody& body = solverBodies_[id];
     const RigidBody& source = bodies[id];
     body.movable = movable[id];

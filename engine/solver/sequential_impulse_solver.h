@@ -49,7 +49,7 @@ class SequentialImpulseSolver final : public ContactSolver {
 
   // Last step's manifolds become the warm-start source here, once per step:
   // a second narrow-phase pass (a touch woke a body) must not lose them.
-  void beginStep(std::vector<RigidBody>&, const std::vector<bool>&, const StepContext&) override;
+  void beginStep(std::vector<RigidBody>&, const MovableBodies&, const StepContext&) override;
   PredictedMotion predictMotion(const RigidBody& body, const StepContext& step) const override;
   BodyReach bodyReach(const RigidBody& body, const StepContext& step) const override;
   double contactReach(const BodyReach& a, const BodyReach& b, const StepContext& step) const override;
@@ -63,7 +63,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   int addCandidates(const std::vector<Contact>& candidates, const std::vector<double>& reaches,
                     const std::vector<RigidBody>& bodies, const StepContext& step,
                     const std::vector<ManifoldSource>& sources) override;
-  SolverStepReport solve(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+  SolverStepReport solve(std::vector<RigidBody>& bodies, const MovableBodies& movable,
                          const std::vector<Contact>& contacts, const StepContext& step) override;
   const std::vector<Contact>& eventContacts(const std::vector<Contact>& contacts) override;
   std::vector<ShownContact> touchedPoints(const std::vector<Contact>& contacts) const override;
@@ -76,7 +76,7 @@ class SequentialImpulseSolver final : public ContactSolver {
   // and hold the final ones afterwards (those of the island's last substep);
   // each point's stepNormalImpulse holds the step's total. Gravity tells which
   // contacts hold weight (resting_load.h).
-  SolverStepReport solveManifolds(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+  SolverStepReport solveManifolds(std::vector<RigidBody>& bodies, const MovableBodies& movable,
                                   std::vector<ContactManifold>& manifolds, const StepContext& step);
 
   // One batch of islands' work this step (islands with the same substeps
@@ -106,7 +106,6 @@ class SequentialImpulseSolver final : public ContactSolver {
   bool restsAlone(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
   double normalSpeed(const ContactManifold& manifold) const;
   bool restsTogether(const std::vector<ContactManifold>& manifolds, const ContactIsland& island) const;
-  void updateCalmTime(std::size_t id, double dt);
   // calm: the island starts from SolverSettings::calmSubsteps.
   SubstepContext chooseSubsteps(const std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds,
                                 const ContactIsland& island, const std::vector<double>& loads, double gravity,
@@ -122,8 +121,9 @@ class SequentialImpulseSolver final : public ContactSolver {
   void rescaleWarmStart(std::vector<ContactManifold>& manifolds, const ContactIsland& island,
                         const std::vector<bool>& movable, double substep) const;
   SubstepContext flightSubsteps(const StepContext& step) const;
-  void integrateFreeBodies(std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
-                           const std::vector<bool>& inIsland, const SubstepContext& substeps);
+  // Movable bodies that no batch holds (inBatch_ unset).
+  void integrateFreeBodies(std::vector<RigidBody>& bodies, const MovableBodies& movable,
+                           const SubstepContext& substeps);
   // Into batches_, whose first batchCount_ entries are this step's.
   void batchIslands(const ContactIslands& islands, const std::vector<SubstepContext>& substeps,
                     const std::vector<char>& kinematic);
@@ -170,6 +170,9 @@ class SequentialImpulseSolver final : public ContactSolver {
   }
   void prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                std::vector<ContactManifold>& manifolds, double dt);
+  // Calm time of a body listed this solve: it restarts when the body was not
+  // listed in the one before (it was in flight, asleep or static meanwhile).
+  void updateCalmTime(std::uint32_t id, double dt);
   // Per manifold, the factors on a's and b's inverse mass and inertia: 1,
   // except where a heavy body rests on a much lighter one (massRatioLimit).
   std::vector<std::pair<double, double>> supportMassScales(const std::vector<ContactManifold>& manifolds) const;
@@ -271,6 +274,10 @@ class SequentialImpulseSolver final : public ContactSolver {
   std::vector<Eigen::Matrix4d> approachInverse_;  // and its pseudo-inverse
   std::vector<double> lastSubstep_;               // per body: the substep it took last step (0: none yet)
   std::vector<double> calmTime_;                  // per body: s it has begun steps in contact and calm
+  std::vector<std::uint64_t> calmSolve_;          // per body: the solve that last listed it (solveCount_)
+  std::uint64_t solveCount_ = 0;
+  std::vector<std::uint32_t> listedIds_;          // the bodies in a manifold this step, ascending (prepare)
+  std::vector<char> inBatch_;                     // per body: in this step's batches (solveManifolds)
   std::vector<std::pair<double, double>> massScales_;  // per manifold, from supportMassScales
   ContactIslands islands_;                             // this step's, from solveManifolds
   std::vector<IslandWork> batches_;                    // [0, batchCount_) this step's
