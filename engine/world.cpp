@@ -102,6 +102,19 @@ BodyId World::addBody(const BodyDefinition& definition) {
   return id;
 }
 
+void World::reserveBodies(std::size_t count) {
+  bodies_.reserve(count);
+  proxies_.reserve(count);
+  frozen_.reserve(count);
+  asleep_.reserve(count);
+  present_.reserve(count);
+  slowTime_.reserve(count);
+  island_.reserve(count);
+  inActive_.reserve(count);
+  isEdited_.reserve(count);
+  movable_.flags.reserve(count);
+}
+
 RigidBody& World::body(BodyId id) {
   RigidBody& body = bodies_.at(id);
   if (!isEdited_[id]) {
@@ -196,7 +209,10 @@ void World::wake(BodyId id) {
   if (!asleep_.at(id)) return;
   const BodyId island = island_[id];
   const auto found = sleepingIslands_.find(island);
-  if (found == sleepingIslands_.end()) return;  // every sleeper is listed under its label
+  if (found == sleepingIslands_.end()) {  // alone: only islands of several bodies are listed
+    wakeBody(id);
+    return;
+  }
   std::vector<BodyId> members = std::move(found->second);
   sleepingIslands_.erase(found);
   // In id order; a member listed twice, removed or asleep elsewhere since is
@@ -214,9 +230,9 @@ void World::wakeBody(BodyId id) {
   restChanged_ = true;
 }
 
-void World::putToSleep(BodyId id) {
+void World::putToSleep(BodyId id, bool alone) {
   setAsleep(id, true);
-  sleepingIslands_[island_[id]].push_back(id);
+  if (!alone) sleepingIslands_[island_[id]].push_back(id);
   bodies_[id].setLinearVelocity(Vec3::Zero());
   bodies_[id].setAngularVelocity(Vec3::Zero());
   broadPhase_->setProxyActive(proxies_[id], false);
@@ -237,7 +253,7 @@ void World::sleep(BodyId id) {
     throw std::invalid_argument("body " + std::to_string(id) + " is absent or frozen: it cannot sleep");
   if (asleep_[id]) return;
   island_[id] = id;  // alone: waking it wakes no other body
-  putToSleep(id);
+  putToSleep(id, true);
 }
 
 bool World::isMoving(BodyId id) const {
@@ -353,12 +369,12 @@ void World::wakePushedBodies() {
 // Each moving body's box is predicted in parallel; the broad phase's edits
 // stay serial, in body order, so the tree is the same for any thread count.
 void World::updateBroadPhase(const StepContext& context) {
-  predictions_.resize(bodies_.size());
+  predictions_.resize(moving_.size());  // by place in moving_
   tasks_->parallelFor(moving_.size(), bodyGrain, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) predictions_[moving_[k]] = solver_->predictMotion(bodies_[moving_[k]], context);
+    for (std::size_t k = begin; k < end; ++k) predictions_[k] = solver_->predictMotion(bodies_[moving_[k]], context);
   });
-  for (const BodyId id : moving_)
-    broadPhase_->moveProxy(proxies_[id], predictions_[id].box, predictions_[id].displacement);
+  for (std::size_t k = 0; k < moving_.size(); ++k)
+    broadPhase_->moveProxy(proxies_[moving_[k]], predictions_[k].box, predictions_[k].displacement);
 }
 
 void World::findContacts(const StepContext& context) {
@@ -394,16 +410,17 @@ void World::findContacts(const StepContext& context) {
 World::PairOutcome World::screenPair(const BodyPair& pair, const StepContext& context) const {
   // A kinematic body passes through static ones. (Dense per-body flags: most
   // pairs end at the bounds, and need not touch the bodies themselves.)
-  if (!dynamicInPair_[pair.a] && !dynamicInPair_[pair.b]) return PairOutcome::Skipped;
-  if (!reachBounds_[pair.a].overlaps(reachBounds_[pair.b])) return PairOutcome::BoundsRejected;
-  const double reach = solver_->contactReach(bodyReaches_[pair.a], bodyReaches_[pair.b], context);
-  if (!tightBounds_[pair.a].enlarged(reach).overlaps(tightBounds_[pair.b])) return PairOutcome::BoundsRejected;
+  const MeasuredBody &a = measured(pair.a), &b = measured(pair.b);
+  if (!a.dynamic && !b.dynamic) return PairOutcome::Skipped;
+  if (!a.reachBounds.overlaps(b.reachBounds)) return PairOutcome::BoundsRejected;
+  const double reach = solver_->contactReach(a.reach, b.reach, context);
+  if (!a.tight.enlarged(reach).overlaps(b.tight)) return PairOutcome::BoundsRejected;
   return PairOutcome::Near;
 }
 
 // Writes into `answer` in place.
 World::PairOutcome World::answerPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer) const {
-  const double reach = solver_->contactReach(bodyReaches_[pair.a], bodyReaches_[pair.b], context);
+  const double reach = solver_->contactReach(measured(pair.a).reach, measured(pair.b).reach, context);
   answer.reach = reach;
   answer.kept = nullptr;
   const RigidBody &a = bodies_[pair.a], &b = bodies_[pair.b];
@@ -429,27 +446,27 @@ World::PairOutcome World::answerPair(const BodyPair& pair, const StepContext& co
 // alone, once per body: a body meets many pairs. Bodies do not move between
 // the passes of a step, but a pass after a wake has other pairs, so each pass
 // measures anew.
+// Stored densely, in the order the pairs meet the bodies (pairPlace_), so
+// the tables grow with the bodies in pairs, not with the world.
 void World::measureBodies(const StepContext& context) {
-  inSomePair_.resize(bodies_.size(), 0);
-  for (const BodyId id : pairBodies_) inSomePair_[id] = 0;
+  pairPlace_.resize(bodies_.size(), notInPair);
+  for (const BodyId id : pairBodies_) pairPlace_[id] = notInPair;
   pairBodies_.clear();
   for (const BodyPair& pair : pairs_)
     for (const BodyId id : {pair.a, pair.b})
-      if (!inSomePair_[id]) {
-        inSomePair_[id] = 1;
+      if (pairPlace_[id] == notInPair) {
+        pairPlace_[id] = static_cast<std::uint32_t>(pairBodies_.size());
         pairBodies_.push_back(id);
       }
-  tightBounds_.resize(bodies_.size());
-  bodyReaches_.resize(bodies_.size());
-  reachBounds_.resize(bodies_.size());
-  dynamicInPair_.resize(bodies_.size());
+  measured_.resize(pairBodies_.size());
   tasks_->parallelFor(pairBodies_.size(), bodyGrain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
-      const BodyId id = pairBodies_[k];
-      dynamicInPair_[id] = bodies_[id].isDynamic() ? 1 : 0;
-      tightBounds_[id] = bodies_[id].collider().worldBounds(bodies_[id].transform());
-      bodyReaches_[id] = solver_->bodyReach(bodies_[id], context);
-      reachBounds_[id] = paddedReachBounds(tightBounds_[id], solver_->reachShare(bodyReaches_[id], context));
+      const RigidBody& body = bodies_[pairBodies_[k]];
+      MeasuredBody& measured = measured_[k];
+      measured.dynamic = body.isDynamic();
+      measured.tight = body.collider().worldBounds(body.transform());
+      measured.reach = solver_->bodyReach(body, context);
+      measured.reachBounds = paddedReachBounds(measured.tight, solver_->reachShare(measured.reach, context));
     }
   });
 }
@@ -734,14 +751,17 @@ bool World::updateSleep(const StepContext& context) {
   if (!settings_.allowSleep) return false;
   const std::vector<BodyId>& ids = movable_.ids;
   std::vector<double> islandSlowTime(ids.size(), std::numeric_limits<double>::infinity());  // by the root's rank
+  std::vector<std::uint32_t> islandSize(ids.size(), 0);
   for (const BodyId id : ids) {
     double& slowest = islandSlowTime[islandRank_[island_[id]]];
     slowest = std::min(slowest, slowTime_[id]);
+    ++islandSize[islandRank_[island_[id]]];
   }
   bool fellAsleep = false;
   for (const BodyId id : ids) {
-    if (islandSlowTime[islandRank_[island_[id]]] < settings_.timeToSleep) continue;
-    putToSleep(id);
+    const BodyId root = islandRank_[island_[id]];
+    if (islandSlowTime[root] < settings_.timeToSleep) continue;
+    putToSleep(id, islandSize[root] == 1);
     fellAsleep = true;
   }
   return fellAsleep;

@@ -152,6 +152,9 @@ class World {
 
   // Throws std::invalid_argument (see RigidBody) for a bad definition.
   BodyId addBody(const BodyDefinition& definition);
+  // Room for `count` bodies in all, so a loader that knows its count builds
+  // the world without growing the per-body tables past it.
+  void reserveBodies(std::size_t count);
 
   std::size_t bodyCount() const { return bodies_.size(); }
   // What is changed through this reference reaches the next step: a sleeping
@@ -312,7 +315,8 @@ class World {
   bool updateSleep(const StepContext& context);  // true when an island fell asleep
   void freezeNonFiniteBodies();  // the active bodies and the edited ones
   void applyLifetimes(int state);  // add and remove what the lifetimes say for `state`
-  void putToSleep(BodyId id);
+  // `alone`: its island is itself, and is not listed (sleepingIslands_).
+  void putToSleep(BodyId id, bool alone);
   void setAsleep(BodyId id, bool asleep);  // the flag and the count of sleepers
   void wakeBody(BodyId id);  // this body only; wake() wakes its island
   std::vector<std::shared_ptr<const debugdraw::TriangleMesh>> hullMeshes() const;
@@ -343,11 +347,17 @@ class World {
   std::vector<PairAnswer> pairAnswers_;      // per near pair
   std::vector<std::uint32_t> castPairs_;       // near pairs (their k) cast this pass
   std::vector<ContactManifold> castManifolds_;  // per cast pair, at the start of the step
-  std::vector<char> inSomePair_;             // per body, this pass (measureBodies)
-  std::vector<char> dynamicInPair_;          // per body in a pair, this pass (measureBodies)
-  std::vector<Aabb> tightBounds_;            // per body in a pair, this pass (measureBodies)
-  std::vector<BodyReach> bodyReaches_;       // per body, this pass (measureBodies)
-  std::vector<Aabb> reachBounds_;            // tight box grown by the body's reach share, padded (measureBodies)
+  // What the pair screen needs of each body in a pair, this pass (measureBodies).
+  struct MeasuredBody {
+    Aabb tight;
+    Aabb reachBounds;  // tight box grown by the body's reach share, padded
+    BodyReach reach;
+    bool dynamic = false;
+  };
+  static constexpr std::uint32_t notInPair = ~0u;
+  std::vector<std::uint32_t> pairPlace_;     // per body: its place in pairBodies_ and measured_, or notInPair
+  std::vector<MeasuredBody> measured_;       // per body in a pair
+  const MeasuredBody& measured(BodyId id) const { return measured_[pairPlace_[id]]; }
   std::vector<Contact> candidates_;          // tested pairs, for the solver (gatherContacts)
   std::vector<double> reaches_;              // their contactReach
   std::vector<OffloadRequest> offloadRequests_;  // this pass's offloaded pairs (testOffloadedPairs)
@@ -355,7 +365,7 @@ class World {
   std::vector<OffloadedContact> offloaded_;      // the offload's answers
   std::vector<ManifoldSource> manifoldSources_;  // per candidate: its offloaded manifold or kept answer, if any
   KeptAnswers kept_;                             // answers worth taking again
-  std::vector<PredictedMotion> predictions_;  // per body, this step (updateBroadPhase)
+  std::vector<PredictedMotion> predictions_;  // per moving body, this step (updateBroadPhase)
   std::vector<StaticRowCounts> staticRows_;   // per body, this pass (testStaticPairs)
   std::vector<Contact> contacts_;  // this step's touching pairs
   std::unique_ptr<ContactSolver> solver_;
@@ -369,8 +379,9 @@ class World {
   std::vector<char> isEdited_;     // per body: in edited_
   std::vector<BodyId> pairBodies_;  // bodies in a candidate pair, this pass (measureBodies)
   int sleepingCount_ = 0;          // present, finite sleeping bodies
-  // The members of each sleeping island, by its label (islandOf): a wake
-  // visits its island, not the world.
+  // The members of each sleeping island of several bodies, by its label
+  // (islandOf): a wake visits its island, not the world. A body asleep
+  // alone is its own island, and needs no entry.
   std::unordered_map<BodyId, std::vector<BodyId>> sleepingIslands_;
   // A body woke, left, froze or a kinematic body's motion was set since the
   // last step ended: pairs at rest may no longer be.

@@ -553,6 +553,7 @@ World buildWorld(const SceneDescription& scene, std::shared_ptr<CollisionOffload
   const auto entry = [](const char* list, std::size_t i) { return std::string(list) + "[" + std::to_string(i) + "]"; };
   std::optional<World> world;
   named([] { return std::string("world settings"); }, [&] { world.emplace(scene.world, std::move(offload)); });
+  world->reserveBodies(scene.bodies.size());  // bounded by the loader's body limit
   for (std::size_t i = 0; i < scene.bodies.size(); ++i)
     named([&] { return bodyWhere(i); }, [&] { world->addBody(scene.bodies[i]); });
   for (const BodyId id : scene.sleeping) named([&] { return bodyWhere(id) + ": asleep"; }, [&] { world->sleep(id); });

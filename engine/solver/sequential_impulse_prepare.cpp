@@ -84,7 +84,7 @@ void SequentialImpulseSolver::buildBatchConstraints(const std::vector<RigidBody>
     for (int lane = 0; lane < count; ++lane)
       frames[lane] = manifoldFrame(bodies, manifolds[members[lane]], members[lane], true);
     const unsigned bouncing =
-        buildWideManifolds(members, count, manifolds, frames, solverBodies_, settings, work.groups[g]);
+        buildWideManifolds(members, count, manifolds, frames, solverBodies_.byRank(), ranks_, settings, work.groups[g]);
     // Restitution (after the substeps, manifold by manifold) reads the
     // constraints of a manifold that may bounce.
     for (int lane = 0; lane < count; ++lane) {

@@ -25,7 +25,7 @@ constexpr std::size_t batchManifolds = 128;
 // the stepping thread.
 constexpr std::size_t batchSplitMinimum = 2 * batchManifolds;
 
-bool touchesKinematic(const std::vector<BodyTraits>& traits, const std::vector<ContactManifold>& manifolds,
+bool touchesKinematic(const RankedTable<BodyTraits>& traits, const std::vector<ContactManifold>& manifolds,
                       const ContactIsland& island) {
   for (std::uint32_t m : island.manifolds)
     if (traits[manifolds[m].a].kinematic || traits[manifolds[m].b].kinematic) return true;
@@ -336,7 +336,7 @@ namespace {
 // leaves no load (bodies moving on together) pushes in its first substeps
 // only, so the step's total decides, not the last substep's impulse.
 // Reported at its hardest-pushed point.
-std::optional<Contact> speculativeImpact(const ContactManifold& manifold, const std::vector<SolverBody>& bodies) {
+std::optional<Contact> speculativeImpact(const ContactManifold& manifold, const RankedTable<SolverBody>& bodies) {
   const ManifoldPoint* strongest = nullptr;
   for (int p = 0; p < manifold.pointCount; ++p) {
     const ManifoldPoint& point = manifold.points[p];
@@ -790,11 +790,6 @@ void SequentialImpulseSolver::rescaleWarmStart(std::vector<ContactManifold>& man
 // 16000 bodies took 0.2 ms, and 0.3 ms when another thread had written them).
 void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
                                       std::vector<ContactManifold>& manifolds, double dt) {
-  solverBodies_.resize(bodies.size());
-  traits_.resize(bodies.size());
-  motionProperties_.resize(bodies.size());
-  startVelocities_.resize(bodies.size());
-  impactVelocities_.resize(bodies.size());
   calmTime_.resize(bodies.size(), 0.0);
   calmSolve_.resize(bodies.size(), 0);
   ++solveCount_;
@@ -808,6 +803,12 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
         listedIds_.push_back(id);
       }
   std::sort(listedIds_.begin(), listedIds_.end());
+  ranks_.assign(listedIds_, bodies.size());
+  solverBodies_.resize(ranks_);
+  traits_.resize(ranks_);
+  motionProperties_.resize(ranks_);
+  startVelocities_.resize(ranks_);
+  impactVelocities_.resize(ranks_);
   forEach(listedIds_.size(), 256, [&](std::size_t k) {
     const std::uint32_t id = listedIds_[k];
     SolverBody& body = solverBodies_[id];
@@ -895,7 +896,7 @@ void SequentialImpulseSolver::integratePositions(std::span<const std::uint32_t> 
 // 0, and their zero masses leave them out of the solve), a single
 // manifold's into its points' constraints.
 void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& manifolds, IslandWork& work) {
-  forEach(work.groups.size(), 64, [&](std::size_t g) { measureWideGaps(work.groups[g], solverBodies_); });
+  forEach(work.groups.size(), 64, [&](std::size_t g) { measureWideGaps(work.groups[g], solverBodies_.byRank()); });
   forEach(work.singles.size(), 256, [&](std::size_t i) {
     const std::uint32_t m = work.singles[i];
     double gaps[ContactManifold::maxPoints];
@@ -906,7 +907,7 @@ void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& ma
 
 void SequentialImpulseSolver::warmStart(std::vector<ContactManifold>& manifolds, IslandWork& work) {
   runColours(
-      work, [this](std::span<WideManifolds> groups) { warmStartWide(groups, solverBodies_); },
+      work, [this](std::span<WideManifolds> groups) { warmStartWide(groups, solverBodies_.byRank()); },
       [&](std::uint32_t m) { warmStartManifold(manifolds[m], m); });
 }
 
@@ -1102,7 +1103,7 @@ void SequentialImpulseSolver::solve(std::vector<ContactManifold>& manifolds, Isl
   const SubstepContext& substeps = work.substeps;
   const WideSweep sweep{&substeps, settings_.maxPushSpeed, useBias, reversed, stepEnds};
   runColours(
-      work, [this, &sweep](std::span<WideManifolds> groups) { solveWide(groups, solverBodies_, sweep); },
+      work, [this, &sweep](std::span<WideManifolds> groups) { solveWide(groups, solverBodies_.byRank(), sweep); },
       [&](std::uint32_t m) {
         ContactManifold& manifold = manifolds[m];
         // The step's last relax sweep leaves a manifold that no point has

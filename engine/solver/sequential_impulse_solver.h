@@ -34,6 +34,7 @@
 
 #include "engine/contacts/manifold_builder.h"
 #include "engine/parallel/task_system.h"
+#include "engine/solver/body_ranks.h"
 #include "engine/solver/contact_islands.h"
 #include "engine/solver/contact_solver.h"
 #include "engine/solver/point_constraint.h"
@@ -258,11 +259,12 @@ class SequentialImpulseSolver final : public ContactSolver {
   ManifoldScratch manifoldScratch_;
   std::vector<std::size_t> candidateSlot_;  // per candidate of addCandidates: its manifold, or none
   std::vector<Contact> eventContacts_;  // this step's contacts plus speculative impacts
-  std::vector<SolverBody> solverBodies_;
-  std::vector<BodyTraits> traits_;  // per body in a manifold, from prepare
-  std::vector<MotionProperties> motionProperties_;  // per body in a manifold, from prepare
-  std::vector<std::pair<Vec3, Vec3>> startVelocities_;  // per body in a manifold: linear, angular at the start
-  std::vector<std::pair<Vec3, Vec3>> impactVelocities_;  // sequentialImpacts' copy
+  BodyRanks ranks_;  // the bodies in this step's manifolds (prepare); the tables below hold those only
+  RankedTable<SolverBody> solverBodies_;
+  RankedTable<BodyTraits> traits_;  // per body in a manifold, from prepare
+  RankedTable<MotionProperties> motionProperties_;  // per body in a manifold, from prepare
+  RankedTable<std::pair<Vec3, Vec3>> startVelocities_;  // per body in a manifold: linear, angular at the start
+  RankedTable<std::pair<Vec3, Vec3>> impactVelocities_;  // sequentialImpacts' copy
   std::vector<char> listed_;                        // per body: in a manifold this step (prepare)
   std::vector<ManifoldTangents> tangents_;      // per manifold
   std::vector<PointConstraint> constraints_;    // maxPoints per manifold, where constrained_

@@ -20,25 +20,26 @@ namespace {
 
 constexpr int unreached = -1;
 
-// Manifold indices by body, compressed: the manifolds of body i are
-// entries[offsets[i] .. offsets[i + 1]).
+// Manifold indices by body, compressed: the manifolds of the body of rank k
+// are entries[offsets[k] .. offsets[k + 1]).
 struct BodyManifolds {
   std::vector<std::uint32_t> offsets, entries;
 };
 
-BodyManifolds manifoldsByBody(const std::vector<ContactManifold>& manifolds, std::size_t bodyCount) {
+BodyManifolds manifoldsByBody(const std::vector<ContactManifold>& manifolds, const BodyRanks& ranks) {
   BodyManifolds result;
-  result.offsets.assign(bodyCount + 1, 0);
+  const std::size_t count = ranks.size();
+  result.offsets.assign(count + 1, 0);
   for (const ContactManifold& manifold : manifolds) {
-    ++result.offsets[manifold.a + 1];
-    ++result.offsets[manifold.b + 1];
+    ++result.offsets[ranks(manifold.a) + 1];
+    ++result.offsets[ranks(manifold.b) + 1];
   }
-  for (std::size_t i = 0; i < bodyCount; ++i) result.offsets[i + 1] += result.offsets[i];
-  result.entries.resize(result.offsets[bodyCount]);
+  for (std::size_t k = 0; k < count; ++k) result.offsets[k + 1] += result.offsets[k];
+  result.entries.resize(result.offsets[count]);
   std::vector<std::uint32_t> next(result.offsets.begin(), result.offsets.end() - 1);
   for (std::uint32_t m = 0; m < manifolds.size(); ++m) {
-    result.entries[next[manifolds[m].a]++] = m;
-    result.entries[next[manifolds[m].b]++] = m;
+    result.entries[next[ranks(manifolds[m].a)]++] = m;
+    result.entries[next[ranks(manifolds[m].b)]++] = m;
   }
   return result;
 }
@@ -53,8 +54,10 @@ std::vector<std::pair<double, double>> SequentialImpulseSolver::supportMassScale
   std::vector<std::pair<double, double>> scales(manifolds.size(), {1.0, 1.0});
   const double limit = settings_.massRatioLimit;
   if (limit <= 0.0 || manifolds.empty()) return scales;
-  const BodyManifolds byBody = manifoldsByBody(manifolds, traits_.size());
-  std::vector<int> level(traits_.size(), unreached);
+  const BodyManifolds byBody = manifoldsByBody(manifolds, ranks_);
+  RankedTable<int> level;
+  level.resize(ranks_);
+  std::fill(level.byRank().begin(), level.byRank().end(), unreached);
   std::vector<std::uint32_t> queue;
   for (const ContactManifold& manifold : manifolds)
     for (std::uint32_t id : {manifold.a, manifold.b})
@@ -64,7 +67,7 @@ std::vector<std::pair<double, double>> SequentialImpulseSolver::supportMassScale
       }
   for (std::size_t next = 0; next < queue.size(); ++next) {
     const std::uint32_t lower = queue[next];
-    for (std::uint32_t k = byBody.offsets[lower]; k < byBody.offsets[lower + 1]; ++k) {
+    for (std::uint32_t k = byBody.offsets[ranks_(lower)]; k < byBody.offsets[ranks_(lower) + 1]; ++k) {
       const ContactManifold& manifold = manifolds[byBody.entries[k]];
       const std::uint32_t upper = manifold.a == lower ? manifold.b : manifold.a;
       if (level[upper] != unreached) continue;

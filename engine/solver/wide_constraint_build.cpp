@@ -212,7 +212,7 @@ Lanes buildSlot(const FrameLanes& frame, const SlotInput& in, const ConstraintSe
 
 unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
                             const ManifoldFrame* frames, const std::vector<SolverBody>& bodies,
-                            const ConstraintSettings& settings, WideManifolds& group) {
+                            const BodyRanks& ranks, const ConstraintSettings& settings, WideManifolds& group) {
   count = std::min(count, lanes);
   group.pointSlots = 0;
   for (int lane = 0; lane < lanes; ++lane) {
@@ -220,10 +220,10 @@ unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::
     const std::uint32_t m = used ? members[lane] : WideManifolds::empty;
     const ContactManifold* manifold = used ? &manifolds[m] : nullptr;
     group.manifold[lane] = m;
-    group.bodyA[lane] = used ? manifold->a : WideManifolds::empty;
-    group.bodyB[lane] = used ? manifold->b : WideManifolds::empty;
-    group.writableA[lane] = used && bodies[manifold->a].movable;
-    group.writableB[lane] = used && bodies[manifold->b].movable;
+    group.bodyA[lane] = used ? ranks(manifold->a) : WideManifolds::empty;
+    group.bodyB[lane] = used ? ranks(manifold->b) : WideManifolds::empty;
+    group.writableA[lane] = used && bodies[group.bodyA[lane]].movable;
+    group.writableB[lane] = used && bodies[group.bodyB[lane]].movable;
     if (!used) continue;
     group.pointSlots = std::max(group.pointSlots, manifold->pointCount);
   }

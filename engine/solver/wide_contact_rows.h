@@ -25,6 +25,7 @@
 #include "engine/contacts/contact_manifold.h"
 #include "engine/solver/point_constraint.h"
 #include "engine/solver/simd_lanes.h"
+#include "engine/solver/body_ranks.h"
 #include "engine/solver/solver_body.h"
 #include "engine/solver/step_context.h"
 
@@ -55,7 +56,9 @@ struct WideTurns {
 // cubes) do without.
 struct WideManifolds {
   static constexpr std::uint32_t empty = ~0u;
-  std::array<std::uint32_t, simd::width> manifold, bodyA, bodyB;  // `empty` in unused lanes
+  // bodyA, bodyB: the bodies' ranks (body_ranks.h), where the kernels find
+  // them in the solver's dense table. `empty` in unused lanes.
+  std::array<std::uint32_t, simd::width> manifold, bodyA, bodyB;
   std::array<bool, simd::width> writableA, writableB;             // a movable body in the lane
   // Every lane's inverse inertia, on both sides, is spinScale times the
   // identity with no rotation locked: a turn is the cross times that scale
@@ -105,7 +108,7 @@ using WideGroups = std::vector<WideManifolds, DefaultInitialisingAllocator<WideM
 // whose manifold has a point that may bounce (restitution not 0).
 unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::vector<ContactManifold>& manifolds,
                             const ManifoldFrame* frames, const std::vector<SolverBody>& bodies,
-                            const ConstraintSettings& settings, WideManifolds& group);
+                            const BodyRanks& ranks, const ConstraintSettings& settings, WideManifolds& group);
 
 // Every point's gap at the bodies' current poses (pointGaps, lane by lane)
 // into points[p].gap; 0 where a lane has no such point.

@@ -17,6 +17,16 @@
 namespace physdbg {
 namespace {
 
+// The tests' bodies are indexed by id: every body ranks as itself.
+BodyRanks identityRanks(const std::vector<SolverBody>& bodies) {
+  std::vector<std::uint32_t> ids(bodies.size());
+  for (std::uint32_t id = 0; id < ids.size(); ++id) ids[id] = id;
+  BodyRanks ranks;
+  ranks.assign(ids, bodies.size());
+  return ranks;
+}
+
+
 using simd::Lanes;
 
 struct Case {
@@ -122,7 +132,7 @@ TEST(WideConstraintBuild, LanesHoldTheScalarConstraintsBitForBit) {
     for (int lane = 0; lane < count; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
     WideManifolds group;
     const unsigned bouncing =
-        buildWideManifolds(members.data(), count, input.manifolds, input.frames.data(), input.bodies, settings, group);
+        buildWideManifolds(members.data(), count, input.manifolds, input.frames.data(), input.bodies, identityRanks(input.bodies), settings, group);
     int mostPoints = 0;
     for (int lane = 0; lane < count; ++lane) {
       const ContactManifold& manifold = input.manifolds[lane];
@@ -188,7 +198,7 @@ TEST(WideConstraintBuild, IsotropicOnlyWhenEveryLaneTurnsByAScale) {
     std::vector<std::uint32_t> members(simd::width);
     for (int lane = 0; lane < simd::width; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
     WideManifolds group;
-    buildWideManifolds(members.data(), simd::width, input.manifolds, input.frames.data(), input.bodies, settings,
+    buildWideManifolds(members.data(), simd::width, input.manifolds, input.frames.data(), input.bodies, identityRanks(input.bodies), settings,
                        group);
     return group;
   };
@@ -232,9 +242,9 @@ TEST(WideContactRows, IsotropicGroupsSolveAsStoredTurnsWould) {
     std::vector<std::uint32_t> members(simd::width);
     for (int lane = 0; lane < simd::width; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
     WideGroups scaled(1), turned(1);
-    buildWideManifolds(members.data(), simd::width, input.manifolds, input.frames.data(), input.bodies, settings,
+    buildWideManifolds(members.data(), simd::width, input.manifolds, input.frames.data(), input.bodies, identityRanks(input.bodies), settings,
                        scaled[0]);
-    buildWideManifolds(members.data(), simd::width, stored.manifolds, stored.frames.data(), stored.bodies, settings,
+    buildWideManifolds(members.data(), simd::width, stored.manifolds, stored.frames.data(), stored.bodies, identityRanks(stored.bodies), settings,
                        turned[0]);
     ASSERT_TRUE(scaled[0].isotropic);
     ASSERT_FALSE(turned[0].isotropic);
@@ -284,7 +294,7 @@ TEST(WideConstraintBuild, LaneGapsMatchTheScalarGapsBitForBit) {
     std::vector<std::uint32_t> members(count);
     for (int lane = 0; lane < count; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
     WideManifolds group;
-    buildWideManifolds(members.data(), count, input.manifolds, input.frames.data(), input.bodies, settings, group);
+    buildWideManifolds(members.data(), count, input.manifolds, input.frames.data(), input.bodies, identityRanks(input.bodies), settings, group);
     measureWideGaps(group, input.bodies);
     for (int lane = 0; lane < count; ++lane) {
       const ContactManifold& manifold = input.manifolds[lane];
@@ -338,7 +348,7 @@ TEST(WideContactRows, GroupsSolvedSideBySideEndAsTheyWouldAlone) {
       std::vector<std::uint32_t> members(count);
       for (int lane = 0; lane < count; ++lane) members[lane] = static_cast<std::uint32_t>(g * simd::width + lane);
       buildWideManifolds(members.data(), count, input.manifolds, input.frames.data() + g * simd::width,
-                         input.bodies, settings, groups[g]);
+                         input.bodies, identityRanks(input.bodies), settings, groups[g]);
       for (int p = 0; p < groups[g].pointSlots; ++p) groups[g].points[p].gap = Lanes::all(0.01 * (p - 1));
     }
     WideGroups alone = groups;
