@@ -7,7 +7,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "debugdraw/primitives.h"
@@ -18,17 +17,19 @@
 #include "engine/contacts/contact_events.h"
 #include "engine/contacts/contact_history.h"
 #include "engine/contacts/contact_manifold.h"
-#include "engine/contacts/contact_reuse.h"
+#include "engine/dynamics/active_bodies.h"
 #include "engine/dynamics/rigid_body.h"
+#include "engine/dynamics/step_schedule.h"
 #include "engine/math.h"
+#include "engine/narrowphase/contact_pass.h"
 #include "engine/narrowphase/narrow_phase_options.h"
+#include "engine/sleep/sleep_islands.h"
 #include "engine/solver/contact_solver.h"
 #include "engine/solver/solver_settings.h"
 #include "engine/step_profile.h"
 
 namespace physdbg {
 
-using BodyId = std::uint32_t;
 class DynamicAabbTree;
 class TaskSystem;
 
@@ -78,42 +79,6 @@ struct WorldSettings {
   CollisionDevice collisionDevice = CollisionDevice::Cpu;
 };
 
-// A force, torque, impulse or velocity change (its ForceMode) applied to one
-// dynamic body at every step s with firstStep <= s < endStep, before the step
-// integrates. A force through a world point `at` off the centre of mass also
-// turns the body (torque (at - centre) x force).
-struct ScheduledForce {
-  BodyId body = 0;
-  Vec3 vector = Vec3::Zero();  // N, m/s^2, N s or m/s (torques: N m, ...)
-  bool isTorque = false;
-  ForceMode mode = ForceMode::Force;
-  std::optional<Vec3> at;
-  int firstStep = 0, endStep = 1;
-};
-
-// A change of one body's state when step `step` begins (step 0 is the first),
-// as ScheduledForce's firstStep: the world after `step` steps is replaced by
-// it, before forces and gravity act. Each given part replaces the body's
-// own; at least one must be given. A sleeping body that is set wakes with its
-// island; a kinematic body may be set (it then moves with the new values).
-struct ScheduledState {
-  BodyId body = 0;
-  int step = 0;
-  std::optional<Vec3> position;  // m, the centre of mass
-  std::optional<Quat> orientation;  // normalised when applied; not zero
-  std::optional<Vec3> linearVelocity;   // m/s
-  std::optional<Vec3> angularVelocity;  // rad/s, world frame
-};
-
-// When a body takes part in the run: in the states s (the world after s
-// steps) with addAtStep <= s < removeAtStep. Ids never change, so a body
-// added later keeps the id (the scene index) it was created with.
-struct BodyLifetime {
-  BodyId body = 0;
-  int addAtStep = 0;
-  std::optional<int> removeAtStep;
-};
-
 // A body whose state stopped being finite: reported once, then frozen.
 struct NumericalFault {
   BodyId body = 0;
@@ -161,7 +126,7 @@ class World {
   // body given a velocity or a force wakes, one made non-finite is frozen.
   // (The step visits only awake bodies and the bodies handed out here.)
   RigidBody& body(BodyId id);
-  const RigidBody& body(BodyId id) const { return bodies_.at(id); }
+  const RigidBody& body(BodyId id) const { return bodies_[requireLive(id)]; }
   const std::vector<RigidBody>& bodies() const { return bodies_; }
 
   const WorldSettings& settings() const { return settings_; }
@@ -187,6 +152,13 @@ class World {
   // Puts a removed body back, awake, where and as fast as it was.
   void restoreBody(BodyId id);
   bool isPresent(BodyId id) const { return present_.at(id); }
+  // Takes the body out for good (as removeBody, and its lifetime is
+  // dropped). Ids are never handed out again, so a stale id cannot name
+  // another body: every later call that acts on or hands out this one
+  // (body, sleep, wake, schedule*, removeBody, restoreBody, destroyBody)
+  // throws std::invalid_argument saying it was destroyed.
+  void destroyBody(BodyId id);
+  bool isDestroyed(BodyId id) const { return destroyed_.at(id); }
   // Removes the body now if it comes later, and applies the lifetime's steps
   // as the run reaches them. Throws std::invalid_argument for an unknown
   // body, a second lifetime for it, a negative addAtStep, removeAtStep <=
@@ -209,11 +181,11 @@ class World {
   // The lowest id of the body's island: awake bodies linked by the last
   // step's touching contacts, or, for a sleeping body, the island it fell
   // asleep with. A static or frozen body is alone (its own id).
-  BodyId islandOf(BodyId id) const { return island_.at(id); }
+  BodyId islandOf(BodyId id) const { return islands_.label(id); }
   bool isFrozen(BodyId id) const { return frozen_.at(id); }
   const std::vector<NumericalFault>& numericalFaults() const { return faults_; }
   const StepStats& lastStepStats() const { return stats_; }
-  const std::vector<Contact>& contacts() const { return contacts_; }
+  const std::vector<Contact>& contacts() const { return contactPass_.contacts(); }
   // Sequential-impulse solver only: this step's manifolds, speculative points included.
   const std::vector<ContactManifold>& manifolds() const { return solver_->manifolds(); }
   const std::vector<BodyPair>& candidatePairs() const { return pairs_; }
@@ -251,141 +223,69 @@ class World {
   double impulseScale() const;
 
  private:
+  // The step's stages, in world.cpp in step order; the per-body ones in
+  // world_bodies.cpp; what the debugger shows in world_shown_contacts.cpp
+  // and world_debug_draw.cpp.
   void applyForces();
   void applyScheduledForces();
   void applyScheduledStates();
   void wakePushedBodies();
   void moveKinematicBodies(const StepContext& context);
-  // The bodies a step visits (active_): present, finite, not static and not
-  // asleep, so sleeping and static bodies cost nothing. Kept ascending.
-  void updateActivity(BodyId id);
-  const std::vector<BodyId>& activeBodies();
-  // moving_ and movable_ from the active bodies, as isMoving and isPushable say now.
-  const MovableBodies& refreshMoving();
   void updateBroadPhase(const StepContext& context);
   void findContacts(const StepContext& context);
-  // Candidate pairs in two parallel passes, gathered in pair order
-  // (gatherContacts), so contacts, manifolds and counters come out as a
-  // serial pass makes them. screenPair settles most pairs at the bounds and
-  // writes one byte each; answerPair runs the narrow phase on the few left
-  // (nearPairs_), each into a dense slot. (A whole answer per pair, written
-  // by one thread and read by another, was megabytes of cache lines crossing
-  // cores each step; slots per candidate pair, 0.85 KB each and one in ten
-  // written, spread 4000 boxes' answers over 36 MB.)
-  enum class PairOutcome : std::uint8_t {
-    Skipped,
-    BoundsRejected,
-    Near,  // passed screenPair; answerPair turns it into one of the two below
-    Tested,
-    Offloaded,  // the collision offload answers it (testOffloadedPairs)
-  };
-  struct PairAnswer {  // one per near pair, in pair order (nearPairs_)
-    double reach = 0.0;
-    ContactResult result;
-    ContactResult reversed;                 // B-A, tested only with bruteForceBothOrders
-    const ReusableContact* kept = nullptr;  // the last answer, carried to now (result here, manifold by the solver)
-    int cast = -1;                          // its manifold at the time of impact, in castManifolds_
-  };
-  PairOutcome screenPair(const BodyPair& pair, const StepContext& context) const;
-  PairOutcome answerPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer) const;
-  void measureBodies(const StepContext& context);
-  void testPairs(const StepContext& context);
-  void testOffloadedPairs();
-  void castFastPairs(const StepContext& context);
-  Vec3 stepMotion(BodyId id, const StepContext& context) const;
-  void gatherContacts(const StepContext& context);
-  void keepAnswers();
-  void testStaticPairs();
-  struct StaticRowCounts {  // one body's static pairs with higher ids (testStaticPairs)
-    int tested = 0;
-    NarrowPhaseCounters narrowPhase;
-  };
-  StaticRowCounts testStaticRow(BodyId id) const;
   bool wakeTouchedBodies(const StepContext& context);  // true when a body woke
-  bool closesOnSleeper(const ContactManifold& manifold, BodyId mover, const StepContext& context) const;
   void solveContacts(const StepContext& context);
-  std::vector<ShownContact> initialContacts() const;
-  std::vector<BodyPair> overlappingBoxes(double margin) const;
+  bool fallAsleep(const StepContext& context);  // true when an island fell asleep
   void keepRestingContacts(bool fellAsleep);
-  // Both bodies take part and do not move, and one sleeps: the pair touches
-  // silently (contact events, the points sleeping bodies rest on).
-  bool atRest(const BodyPair& pair) const;
-  void linkIslands();
-  void updateSlowTimes(const StepContext& context);
-  bool updateSleep(const StepContext& context);  // true when an island fell asleep
   void freezeNonFiniteBodies();  // the active bodies and the edited ones
   void applyLifetimes(int state);  // add and remove what the lifetimes say for `state`
-  // `alone`: its island is itself, and is not listed (sleepingIslands_).
-  void putToSleep(BodyId id, bool alone);
+
+  // A body's state: active_ follows it (present, finite, not static, not asleep).
+  void updateActivity(BodyId id);
+  // moving_ and movable_ from the active bodies, as isMoving says now.
+  const MovableBodies& refreshMoving();
+  void putToSleep(BodyId id);
   void setAsleep(BodyId id, bool asleep);  // the flag and the count of sleepers
   void wakeBody(BodyId id);  // this body only; wake() wakes its island
-  std::vector<std::shared_ptr<const debugdraw::TriangleMesh>> hullMeshes() const;
   // Moves this step: a dynamic body awake and finite, or a kinematic body
   // with a velocity (a still one is as good as static).
   bool isMoving(BodyId id) const;
   // Present and finite: the body is in the broad phase and can touch.
   bool takesPart(BodyId id) const { return present_[id] && !frozen_[id]; }
-  // Moved by forces and contacts this step: a moving dynamic body. Only these
-  // are solved, link islands and fall asleep.
-  bool isPushable(BodyId id) const { return bodies_[id].isDynamic() && isMoving(id); }
-  // The design's both-orders baseline tests every pair twice on purpose. A
-  // solver that keeps no manifolds (seed) leaves nothing to take again.
-  bool reusesContacts() const { return settings_.reuseContacts && !settings_.bruteForceBothOrders; }
+  // The id names a body that was not destroyed; returns it, else throws.
+  BodyId requireLive(BodyId id) const;
+  // Both bodies take part and do not move, and one sleeps: the pair touches
+  // silently (contact events, the points sleeping bodies rest on).
+  bool atRest(const BodyPair& pair) const;
+
+  std::vector<ShownContact> initialContacts() const;
+  std::vector<BodyPair> overlappingBoxes(double margin) const;
+  std::vector<std::shared_ptr<const debugdraw::TriangleMesh>> hullMeshes() const;
 
   WorldSettings settings_;
+  // Bodies, and their state by kind: one store each.
   std::vector<RigidBody> bodies_;
   std::vector<int> proxies_;  // broad-phase proxy per body, -1 once frozen or removed
-  std::vector<bool> frozen_, asleep_, present_;
-  std::vector<double> slowTime_;  // seconds spent below the sleep speeds
-  std::vector<BodyId> island_;    // lowest id of the body's island (see islandOf)
+  std::vector<bool> frozen_, asleep_, present_, destroyed_;
+  int sleepingCount_ = 0;        // present, finite sleeping bodies
+  ActiveBodies active_;          // the bodies a step visits
+  std::vector<BodyId> moving_;   // active bodies that move this step, ascending (refreshMoving)
+  MovableBodies movable_;        // the dynamic ones among them (refreshMoving)
+  std::vector<BodyId> edited_;   // handed out by body(id) since the last step
+  std::vector<char> isEdited_;   // per body: in edited_
+  SleepIslands islands_;         // islands, slow times and the sleeping islands' members
+  std::vector<Sleeper> sleepers_;  // this step's (fallAsleep)
+  // A body woke, left, froze or a kinematic body's motion was set since the
+  // last step ended: pairs at rest may no longer be.
+  bool restChanged_ = false;
+
   std::unique_ptr<TaskSystem> tasks_;  // before broadPhase_, which may hold a pointer to it
   std::shared_ptr<CollisionOffload> offload_;  // before broadPhase_, which it may have made
   std::unique_ptr<BroadPhase> broadPhase_;
   std::vector<BodyPair> pairs_;
-  std::vector<PairOutcome> pairOutcomes_;    // per candidate pair, this pass (testPairs)
-  std::vector<std::uint32_t> nearPairs_;     // candidate pairs that passed screenPair, ascending (testPairs)
-  std::vector<PairAnswer> pairAnswers_;      // per near pair
-  std::vector<std::uint32_t> castPairs_;       // near pairs (their k) cast this pass
-  std::vector<ContactManifold> castManifolds_;  // per cast pair, at the start of the step
-  // What the pair screen needs of each body in a pair, this pass (measureBodies).
-  struct MeasuredBody {
-    Aabb tight;
-    Aabb reachBounds;  // tight box grown by the body's reach share, padded
-    BodyReach reach;
-    bool dynamic = false;
-  };
-  static constexpr std::uint32_t notInPair = ~0u;
-  std::vector<std::uint32_t> pairPlace_;     // per body: its place in pairBodies_ and measured_, or notInPair
-  std::vector<MeasuredBody> measured_;       // per body in a pair
-  const MeasuredBody& measured(BodyId id) const { return measured_[pairPlace_[id]]; }
-  std::vector<Contact> candidates_;          // tested pairs, for the solver (gatherContacts)
-  std::vector<double> reaches_;              // their contactReach
-  std::vector<OffloadRequest> offloadRequests_;  // this pass's offloaded pairs (testOffloadedPairs)
-  std::vector<std::size_t> offloadPairs_;        // their index in nearPairs_
-  std::vector<OffloadedContact> offloaded_;      // the offload's answers
-  std::vector<ManifoldSource> manifoldSources_;  // per candidate: its offloaded manifold or kept answer, if any
-  KeptAnswers kept_;                             // answers worth taking again
   std::vector<PredictedMotion> predictions_;  // per moving body, this step (updateBroadPhase)
-  std::vector<StaticRowCounts> staticRows_;   // per body, this pass (testStaticPairs)
-  std::vector<Contact> contacts_;  // this step's touching pairs
+  ContactPass contactPass_;
   std::unique_ptr<ContactSolver> solver_;
-  std::vector<char> inActive_;     // per body: listed in active_ (updateActivity)
-  std::vector<BodyId> active_;     // ascending once activeBodies() sorted it
-  bool activeChanged_ = false;     // active_ needs compacting and sorting
-  std::vector<BodyId> moving_;     // active bodies that move this step, ascending (refreshMoving)
-  MovableBodies movable_;          // the dynamic ones among them (refreshMoving)
-  std::vector<BodyId> islandRank_;  // per movable body: its rank in movable_.ids (linkIslands)
-  std::vector<BodyId> edited_;     // handed out by body(id) since the last step
-  std::vector<char> isEdited_;     // per body: in edited_
-  std::vector<BodyId> pairBodies_;  // bodies in a candidate pair, this pass (measureBodies)
-  int sleepingCount_ = 0;          // present, finite sleeping bodies
-  // The members of each sleeping island of several bodies, by its label
-  // (islandOf): a wake visits its island, not the world. A body asleep
-  // alone is its own island, and needs no entry.
-  std::unordered_map<BodyId, std::vector<BodyId>> sleepingIslands_;
-  // A body woke, left, froze or a kinematic body's motion was set since the
-  // last step ended: pairs at rest may no longer be.
-  bool restChanged_ = false;
   ContactEventTracker events_;
   ContactHistory history_;
   bool keepHistory_ = false;

@@ -14,7 +14,7 @@ namespace physdbg {
 std::vector<ShownContact> World::shownContacts() const {
   if (stepCount_ == 0) return mergeContacts(initialContacts(), resting_);
   std::vector<ShownContact> points =
-      mergeContacts(keepHistory_ ? history_.points() : solver_->touchedPoints(contacts_), resting_);
+      mergeContacts(keepHistory_ ? history_.points() : solver_->touchedPoints(contactPass_.contacts()), resting_);
   const auto shown = [this](BodyId id) { return present_[id] && !frozen_[id]; };
   std::erase_if(points, [&](const ShownContact& point) { return !shown(point.pair.a) || !shown(point.pair.b); });
   return points;
@@ -32,7 +32,7 @@ void World::keepRestingContacts(bool fellAsleep) {
   if (resting_.empty() && !fellAsleep) return;  // an awake world: nothing to keep
   if (restChanged_) std::erase_if(resting_, [&](const ShownContact& point) { return !atRest(point.pair); });
   if (!fellAsleep) return;
-  std::vector<ShownContact> fresh = solver_->touchedPoints(contacts_);
+  std::vector<ShownContact> fresh = solver_->touchedPoints(contactPass_.contacts());
   std::erase_if(fresh, [&](const ShownContact& point) { return !atRest(point.pair); });
   for (ShownContact& point : fresh) point.resting = true;
   resting_ = mergeContacts(std::move(fresh), resting_);

@@ -45,6 +45,15 @@ struct NarrowPhaseCounters {
     ++pairs;
     ++reused;
   }
+  NarrowPhaseCounters& operator+=(const NarrowPhaseCounters& other) {
+    pairs += other.pairs;
+    fastPath += other.fastPath;
+    gjk += other.gjk;
+    epa += other.epa;
+    boxBox += other.boxBox;
+    reused += other.reused;
+    return *this;
+  }
 };
 
 }  // namespace physdbg

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <memory>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "engine/broadphase/dynamic_aabb_tree.h"
@@ -192,6 +194,70 @@ TEST(TreeRemoval, RotatesLikeInsertionAndStaysValid) {
   EXPECT_EQ(rotating->proxyCount(), 64);
   EXPECT_LE(rotating->height(), plain->height());
   EXPECT_LE(rotating->internalArea(), plain->internalArea());
+}
+
+}  // namespace
+}  // namespace physdbg
+
+namespace physdbg {
+namespace {
+
+// A destroyed body's id is refused from then on, never silently taken by a
+// later body: the next body gets a new id, and every call that would act on
+// or hand out the destroyed one throws, naming it.
+TEST(DestroyedBody, ItsIdIsRefusedAndNeverReused) {
+  World world;
+  world.addBody(testbodies::floorSlab());
+  const BodyId gone = world.addBody(testbodies::box(Vec3(0, 0.5, 0)));
+  const BodyId top = world.addBody(testbodies::box(Vec3(0, 1.5, 0)));
+  for (int step = 0; step < 60; ++step) world.step();
+  const Vec3 last = world.bodies()[gone].position();
+  world.destroyBody(gone);
+  EXPECT_TRUE(world.isDestroyed(gone));
+  EXPECT_FALSE(world.isPresent(gone));
+  const BodyId next = world.addBody(testbodies::ball(Vec3(3, 2, 0)));
+  EXPECT_NE(next, gone);
+  EXPECT_EQ(next, top + 1);
+  const auto refuses = [&](const char* what, const auto& call) {
+    try {
+      call();
+      ADD_FAILURE() << what << " accepted a destroyed body's id";
+    } catch (const std::invalid_argument& error) {
+      EXPECT_NE(std::string(error.what()).find("body " + std::to_string(gone) + " was destroyed"), std::string::npos)
+          << what << ": " << error.what();
+    }
+  };
+  refuses("body", [&] { world.body(gone); });
+  refuses("const body", [&] { static_cast<const World&>(world).body(gone); });
+  refuses("sleep", [&] { world.sleep(gone); });
+  refuses("wake", [&] { world.wake(gone); });
+  refuses("removeBody", [&] { world.removeBody(gone); });
+  refuses("restoreBody", [&] { world.restoreBody(gone); });
+  refuses("destroyBody", [&] { world.destroyBody(gone); });
+  refuses("scheduleForce", [&] { world.scheduleForce({gone, Vec3(1, 0, 0), false, ForceMode::Force, {}, 100, 101}); });
+  refuses("scheduleState", [&] {
+    ScheduledState state;
+    state.body = gone;
+    state.step = 100;
+    state.linearVelocity = Vec3(1, 0, 0);
+    world.scheduleState(state);
+  });
+  refuses("scheduleLifetime", [&] { world.scheduleLifetime({gone, 0, 200}); });
+  // What rested on it falls, and the run goes on without it.
+  for (int step = 0; step < 60; ++step) world.step();
+  EXPECT_LT(world.body(top).position().y(), 1.0);
+  EXPECT_EQ(world.bodies()[gone].position(), last) << "its last state is kept, untouched";
+}
+
+// A body destroyed before its scheduled return does not come back.
+TEST(DestroyedBody, DropsItsLifetime) {
+  World world;
+  world.addBody(testbodies::floorSlab());
+  const BodyId later = world.addBody(testbodies::box(Vec3(0, 0.5, 0)));
+  world.scheduleLifetime({later, 10, {}});
+  world.destroyBody(later);
+  for (int step = 0; step < 20; ++step) world.step();
+  EXPECT_FALSE(world.isPresent(later));
 }
 
 }  // namespace
