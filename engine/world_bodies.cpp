@@ -31,6 +31,7 @@ BodyId World::addBody(const BodyDefinition& definition) {
   destroyed_.push_back(false);
   isEdited_.push_back(0);
   movable_.flags.push_back(false);
+  movable_.rank.push_back(0);
   islands_.addBody(id);
   active_.addBody();
   updateActivity(id);
@@ -46,6 +47,7 @@ void World::reserveBodies(std::size_t count) {
   destroyed_.reserve(count);
   isEdited_.reserve(count);
   movable_.flags.reserve(count);
+  movable_.rank.reserve(count);
   islands_.reserve(count);
   active_.reserve(count);
 }
@@ -77,6 +79,7 @@ const MovableBodies& World::refreshMoving() {
     moving_.push_back(id);
     if (bodies_[id].isDynamic()) {
       movable_.flags[id] = true;
+      movable_.rank[id] = static_cast<std::uint32_t>(movable_.ids.size());
       movable_.ids.push_back(id);
     }
   }

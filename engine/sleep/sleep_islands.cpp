@@ -23,15 +23,13 @@ void SleepIslands::makeAlone(std::uint32_t id) {
   slowTime_[id] = 0.0;
 }
 
-// Bodies are numbered by their rank among the movable ones (ascending, so a
-// set's root, its lowest rank, is its lowest id).
+// Bodies are numbered by their place among the movable ones (ascending, so
+// a set's root, its lowest place, is its lowest id).
 void SleepIslands::link(const std::vector<Contact>& contacts, const MovableBodies& movable) {
   const std::vector<std::uint32_t>& ids = movable.ids;
-  rank_.resize(island_.size());
-  for (std::size_t k = 0; k < ids.size(); ++k) rank_[ids[k]] = static_cast<std::uint32_t>(k);
   DisjointSets sets(ids.size());
   for (const Contact& contact : contacts)
-    if (movable[contact.a] && movable[contact.b]) sets.unite(rank_[contact.a], rank_[contact.b]);
+    if (movable[contact.a] && movable[contact.b]) sets.unite(movable.rank[contact.a], movable.rank[contact.b]);
   for (std::size_t k = 0; k < ids.size(); ++k) island_[ids[k]] = ids[sets.find(static_cast<std::uint32_t>(k))];
 }
 
@@ -49,12 +47,12 @@ void SleepIslands::findSleepers(const std::vector<RigidBody>& bodies, const Mova
   std::vector<double> islandSlowTime(ids.size(), std::numeric_limits<double>::infinity());  // by the root's rank
   std::vector<std::uint32_t> islandSize(ids.size(), 0);
   for (const std::uint32_t id : ids) {
-    const std::uint32_t root = rank_[island_[id]];
+    const std::uint32_t root = movable.rank[island_[id]];
     islandSlowTime[root] = std::min(islandSlowTime[root], slowTime_[id]);
     ++islandSize[root];
   }
   for (const std::uint32_t id : ids) {
-    const std::uint32_t root = rank_[island_[id]];
+    const std::uint32_t root = movable.rank[island_[id]];
     if (islandSlowTime[root] < settings.timeToSleep) continue;
     const bool alone = islandSize[root] == 1;
     if (!alone) sleeping_[island_[id]].push_back(id);

@@ -55,7 +55,6 @@ class SleepIslands {
  private:
   std::vector<double> slowTime_;       // per body: seconds below the sleep speeds
   std::vector<std::uint32_t> island_;  // per body: its island's lowest id
-  std::vector<std::uint32_t> rank_;    // per movable body: its place in movable.ids (link)
   std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> sleeping_;  // by label
 };
 

@@ -21,25 +21,18 @@ void countsToStarts(std::vector<std::uint32_t>& counts) {
 }  // namespace
 
 // Two passes, counting then filling each island's run in place.
-void buildContactIslands(const std::vector<ContactManifold>& manifolds, const std::vector<bool>& movable,
+void buildContactIslands(const std::vector<ContactManifold>& manifolds, const MovableBodies& movable,
                          ContactIslands& islands) {
-  std::vector<std::uint32_t>& linked = islands.linked_;
-  linked.clear();
-  for (const ContactManifold& manifold : manifolds)
-    for (std::uint32_t id : {manifold.a, manifold.b})
-      if (movable[id]) linked.push_back(id);
-  std::sort(linked.begin(), linked.end());
-  linked.erase(std::unique(linked.begin(), linked.end()), linked.end());
-  islands.localOf_.resize(movable.size());
-  for (std::uint32_t k = 0; k < linked.size(); ++k) islands.localOf_[linked[k]] = k;
-  const auto local = [&](std::uint32_t id) { return islands.localOf_[id]; };
-  // Ranks keep the id order, so a set's root (its lowest rank) is its lowest id.
-  DisjointSets sets(linked.size());
+  // Bodies are numbered by their place among the movable ones, which keeps
+  // the id order: a set's root (its lowest place) is its lowest id.
+  const auto local = [&](std::uint32_t id) { return movable.rank[id]; };
+  const std::size_t count = movable.ids.size();
+  DisjointSets sets(count);
   for (const ContactManifold& manifold : manifolds)
     if (movable[manifold.a] && movable[manifold.b]) sets.unite(local(manifold.a), local(manifold.b));
-  islands.islandOf_.assign(linked.size(), none);  // by root
+  islands.islandOf_.assign(count, none);  // by root
   islands.manifoldIsland_.assign(manifolds.size(), none);
-  islands.listed_.assign(linked.size(), 0);
+  islands.listed_.assign(count, 0);
   std::vector<std::uint32_t>& manifoldStarts = islands.manifoldStarts_;
   std::vector<std::uint32_t>& bodyStarts = islands.bodyStarts_;
   manifoldStarts.clear();

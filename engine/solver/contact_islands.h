@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/contacts/contact_manifold.h"
+#include "engine/solver/movable_bodies.h"
 
 namespace physdbg {
 
@@ -31,21 +32,20 @@ class ContactIslands {
   }
 
  private:
-  friend void buildContactIslands(const std::vector<ContactManifold>&, const std::vector<bool>&, ContactIslands&);
+  friend void buildContactIslands(const std::vector<ContactManifold>&, const MovableBodies&, ContactIslands&);
   std::vector<std::uint32_t> manifolds_, bodies_;
   std::vector<std::uint32_t> manifoldStarts_, bodyStarts_;  // island i's run, then the end
   // Scratch of the build, kept for its capacity.
-  // Bodies are numbered by their rank among the manifolds' movable ones
-  // (localOf_, per body, written only for those), so a build costs what its
-  // manifolds cost, whatever the number of bodies.
+  // By the bodies' place among the movable ones (MovableBodies::rank), so a
+  // build costs what the movable bodies and manifolds cost, whatever the
+  // number of bodies.
   std::vector<std::uint32_t> islandOf_, manifoldIsland_, manifoldFill_, bodyFill_;
-  std::vector<std::uint32_t> linked_, localOf_;
   std::vector<char> listed_;
 };
 
 // Islands in the order of their lowest manifold index; a manifold between two
 // bodies that are both immovable belongs to none. Deterministic.
-void buildContactIslands(const std::vector<ContactManifold>& manifolds, const std::vector<bool>& movable,
+void buildContactIslands(const std::vector<ContactManifold>& manifolds, const MovableBodies& movable,
                          ContactIslands& islands);
 
 }  // namespace physdbg

@@ -15,6 +15,7 @@
 #include "engine/contacts/contact_history.h"
 #include "engine/contacts/contact_manifold.h"
 #include "engine/dynamics/rigid_body.h"
+#include "engine/solver/movable_bodies.h"
 #include "engine/solver/solver_settings.h"
 #include "engine/solver/step_context.h"
 
@@ -52,15 +53,6 @@ struct BodyReach {
   Vec3 linearVelocity = Vec3::Zero();  // m/s
   double acceleration = 0.0;           // m/s^2, this step's
   double spin = 0.0;                   // m/s: angular speed times the body's bounding radius
-};
-
-// The bodies a step moves (dynamic, awake and finite), as a flag per body
-// and as an ascending list: a solver visits the list, never every body, so
-// sleeping and static bodies cost it nothing.
-struct MovableBodies {
-  std::vector<bool> flags;          // per body
-  std::vector<std::uint32_t> ids;   // the flagged bodies, ascending
-  bool operator[](std::size_t id) const { return flags[id]; }
 };
 
 class ContactSolver {

@@ -19,6 +19,7 @@
 
 #include "engine/contacts/contact_manifold.h"
 #include "engine/dynamics/rigid_body.h"
+#include "engine/solver/movable_bodies.h"
 #include "engine/math.h"
 
 namespace physdbg {
@@ -32,7 +33,7 @@ namespace physdbg {
 // With `massScales` (per manifold, the factors on a's and b's inverse mass,
 // sequential_impulse_solver.h), a supporter passes on only the part of a load
 // its scaled contact lets reach it.
-std::vector<double> restingLoads(const std::vector<RigidBody>& bodies, const std::vector<bool>& movable,
+std::vector<double> restingLoads(const std::vector<RigidBody>& bodies, const MovableBodies& movable,
                                  const std::vector<ContactManifold>& manifolds, const std::vector<double>& touching,
                                  const Vec3& up, const std::vector<std::pair<double, double>>* massScales = nullptr);
 

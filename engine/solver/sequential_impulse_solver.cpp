@@ -390,10 +390,10 @@ SolverStepReport SequentialImpulseSolver::solveManifolds(std::vector<RigidBody>&
   prepare(bodies, movable, manifolds, step.dt);
   prepareApproaches(bodies, manifolds, step.gravity, step.dt);
   const double g = step.gravity.norm();
-  const std::vector<double> loads = g > 0.0 ? restingLoads(bodies, movable, manifolds, touching_, -step.gravity / g, &massScales_)
+  const std::vector<double> loads = g > 0.0 ? restingLoads(bodies, movableBodies, manifolds, touching_, -step.gravity / g, &massScales_)
                                             : std::vector<double>(manifolds.size(), 0.0);
   lastSubstep_.resize(bodies.size(), 0.0);
-  buildContactIslands(manifolds, movable, islands_);
+  buildContactIslands(manifolds, movableBodies, islands_);
   const ContactIslands& islands = islands_;
   // Each island's substeps, and its warm start rescaled to them.
   std::vector<SubstepContext> substeps(islands.size());
@@ -802,8 +802,7 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
         listed_[id] = 1;
         listedIds_.push_back(id);
       }
-  std::sort(listedIds_.begin(), listedIds_.end());
-  ranks_.assign(listedIds_, bodies.size());
+  ranks_.assign(listedIds_, bodies.size());  // in the order the manifolds list them: any fixed order will do
   solverBodies_.resize(ranks_);
   traits_.resize(ranks_);
   motionProperties_.resize(ranks_);

@@ -72,7 +72,7 @@ TEST(RestingLoad, ABodyFallingTowardsTheFloorHoldsNothing) {
   world.addBody(staticBox(Vec3(0, -0.5, 0), Vec3(5, 0.5, 5)));
   world.addBody(box(Vec3(0, 3, 0), Vec3(0.5, 0.5, 0.5), 1.0));
   world.step();
-  EXPECT_TRUE(restingLoads(world.bodies(), {false, true}, world.manifolds(), {}, up).empty());
+  EXPECT_TRUE(restingLoads(world.bodies(), std::vector<bool>{false, true}, world.manifolds(), {}, up).empty());
 }
 
 ContactManifold manifoldWithSeparations(std::initializer_list<double> separations) {
