@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/broadphase/brute_force_broad_phase.h"
+#include "engine/baselines/brute_force_broad_phase.h"
 #include "engine/broadphase/tree_broad_phase.h"
 #include "engine/narrowphase/narrow_phase.h"
 #include "engine/solver/contact_solver.h"

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "engine/baselines/static_pairs.h"
-#include "engine/broadphase/brute_force_broad_phase.h"
+#include "engine/baselines/brute_force_broad_phase.h"
 #include "engine/broadphase/tree_broad_phase.h"
 #include "engine/parallel/task_system.h"
 #include "engine/stage_timer.h"

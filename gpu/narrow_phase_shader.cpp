@@ -1,39 +1,31 @@
 #include "gpu/narrow_phase_shader.h"
 
+#include <cstdio>
+#include <string>
+
+#include "engine/contacts/manifold_points.h"
+#include "engine/narrowphase/narrow_phase_options.h"
+#include "engine/narrowphase/narrow_phase_tolerances.h"
+
 namespace physdbg::gpu {
+namespace {
 
 // A port of the CPU narrow phase and box-box manifold to GLSL doubles:
 // analytic_contacts.cpp, box_box_contact.cpp, box_face.cpp,
-// box_box_manifold.cpp and manifold_points.cpp (reduceToFour). Every
-// tolerance is the CPU's own constant, and the arithmetic follows the CPU's
-// order where it decides (rotation matrices as Eigen builds them, the same
-// comparisons in the same order), so the shader takes the CPU's decisions.
-// Every literal carries `lf`: a float literal in a double expression would be
-// rounded to float first.
-const char* narrowPhaseShaderSource() {
-  return R"GLSL(#version 430
+// box_box_manifold.cpp and manifold_points.cpp (reduceToFour). The
+// arithmetic follows the CPU's order where it decides (rotation matrices as
+// Eigen builds them, the same comparisons in the same order), so the shader
+// takes the CPU's decisions. Every literal carries `lf`: a float literal in a
+// double expression would be rounded to float first.
+constexpr const char* kBeforeTolerances = R"GLSL(#version 430
 layout(local_size_x = 64) in;
 
 const uint kSphere = 0u, kBox = 1u, kCapsule = 2u;
 const uint kFlagBoxBox = 1u, kFlagNeedsCpu = 2u, kFlagPointsFromB = 4u;
 
-// box_box_contact.cpp
-const double kParallelSine = 1e-8lf;
-const double kTieTolerance = 1e-10lf;
-const double kWitnessTolerance = 1e-10lf;
-// NarrowPhaseOptions::touchingTolerance, metres
-const double kTouchingTolerance = 1e-6lf;
-// manifold_points.h
-const double kMinimumFaceAlignment = 0.95lf;
-const double kReferenceFaceHysteresis = 1e-3lf;
-const double kClipTolerance = 1e-6lf;
-// box_box_manifold.cpp
-const double kReductionTieMargin = 1e-9lf;
-// A sphere centre this close (relative) to a capsule's core: the CPU's EPA
-// decides the normal (any is as good), so the CPU answers it.
-const double kDegenerateCore = 1e-9lf;
-const double kHuge = 1e300lf;
+)GLSL";
 
+constexpr const char* kAfterTolerances = R"GLSL(
 struct Pose { dvec4 position; dvec4 rotation; };  // position: w unused; rotation: unit quaternion xyzw
 struct Shape { dvec4 parameters; };  // box: half extents; sphere: radius; capsule: radius, half height; w: kind
 struct Request { uvec4 bodies; };    // a, b, reach (double: low word, high word)
@@ -592,6 +584,41 @@ void main() {
   results[index] = result;
 }
 )GLSL";
+
+// A GLSL double literal that reads back as exactly `value`.
+std::string glslDouble(double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  std::string literal = text;
+  if (literal.find_first_of(".e") == std::string::npos) literal += ".0";
+  return literal + "lf";
+}
+
+std::string constant(const char* name, double value) {
+  return std::string("const double ") + name + " = " + glslDouble(value) + ";\n";
+}
+
+// Every tolerance is written from the CPU's own constant, not retyped.
+std::string tolerances() {
+  return "// box_box_contact.cpp (engine/narrowphase/narrow_phase_tolerances.h)\n" +
+         constant("kParallelSine", tolerances::parallelSine) + constant("kTieTolerance", tolerances::tieTolerance) +
+         constant("kWitnessTolerance", tolerances::witnessTolerance) +
+         "// NarrowPhaseOptions::touchingTolerance, metres\n" +
+         constant("kTouchingTolerance", NarrowPhaseOptions{}.touchingTolerance) + "// manifold_points.h\n" +
+         constant("kMinimumFaceAlignment", minimumFaceAlignment) +
+         constant("kReferenceFaceHysteresis", referenceFaceHysteresis) +
+         constant("kClipTolerance", clipTolerance) + "// box_box_manifold.cpp\n" +
+         constant("kReductionTieMargin", tolerances::reductionTieMargin) +
+         "// A sphere centre this close (relative) to a capsule's core: the CPU's EPA\n"
+         "// decides the normal (any is as good), so the CPU answers it.\n" +
+         constant("kDegenerateCore", 1e-9) + constant("kHuge", 1e300);
+}
+
+}  // namespace
+
+const char* narrowPhaseShaderSource() {
+  static const std::string source = kBeforeTolerances + tolerances() + kAfterTolerances;
+  return source.c_str();
 }
 
 }  // namespace physdbg::gpu

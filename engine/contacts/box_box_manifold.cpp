@@ -5,13 +5,12 @@
 #include "engine/contacts/box_face.h"
 #include "engine/contacts/feature_ids.h"
 #include "engine/contacts/manifold_points.h"
+#include "engine/narrowphase/narrow_phase_tolerances.h"
 
 namespace physdbg {
 namespace {
 
-// Relative; far above round-off in the areas the reduction compares, far
-// below any difference that matters to which points hold the box up.
-constexpr double kReductionTieMargin = 1e-9;
+constexpr double kReductionTieMargin = tolerances::reductionTieMargin;  // narrow_phase_tolerances.h
 
 // One box of the pair as the clipping sees it.
 struct PlacedBox {

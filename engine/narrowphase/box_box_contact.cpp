@@ -6,26 +6,15 @@
 
 #include "engine/contacts/box_face.h"
 #include "engine/narrowphase/analytic_contacts.h"
+#include "engine/narrowphase/narrow_phase_tolerances.h"
 
 namespace physdbg {
 namespace {
 
-// Below this sine between an edge of A and an edge of B their cross product
-// is not tried as an axis. A nearly parallel pair gives a direction whose
-// separation carries round-off of about epsilon * size / sine, while leaving
-// the axis out errs by about sine * size (for exactly parallel edges the face
-// axes suffice); the two balance near sqrt(epsilon), 1e-8.
-constexpr double kParallelSine = 1e-8;
-// Relative to the pair's size. Boxes sitting squarely on each other make
-// axes tie in exact arithmetic (an edge cross product is then a face normal),
-// and round-off would pick among them at random from step to step. Within
-// this margin a face of A beats a face of B, and a face beats an edge pair,
-// so resting stacks report a face normal. Kept far below EPA's tolerance
-// (1e-9 of the pair's size): a real edge contact is never traded for a face.
-constexpr double kTieTolerance = 1e-10;
-// Relative to the pair's size: how much the witness points' gap may exceed
-// the axis's separation and still prove it is the distance.
-constexpr double kWitnessTolerance = 1e-10;
+// narrow_phase_tolerances.h says why each is what it is.
+constexpr double kParallelSine = tolerances::parallelSine;
+constexpr double kTieTolerance = tolerances::tieTolerance;
+constexpr double kWitnessTolerance = tolerances::witnessTolerance;
 
 // B as seen from A's frame, and what every axis test needs.
 struct PairFrame {

@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "engine/narrowphase/narrow_phase_options.h"
-#include "engine/solver/seed_solver.h"
+#include "engine/baselines/seed_solver.h"
 #include "engine/solver/sequential_impulse_solver.h"
 
 namespace physdbg {

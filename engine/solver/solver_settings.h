@@ -5,7 +5,7 @@
 namespace physdbg {
 
 enum class SolverKind {
-  Seed,               // the design's one-point response (seed_solver.h)
+  Seed,               // the design's one-point response (baselines/seed_solver.h)
   SequentialImpulse,  // manifolds, friction, soft contacts, substeps (sequential_impulse_solver.h)
 };
 

@@ -1,7 +1,7 @@
 // The world step against closed-form mechanics: bounce heights, head-on and
 // off-centre collisions, resting contact, axis locks, numerical faults and
 // sleeping. Expected values come from the impulse law the response implements
-// (engine/solver/seed_solver.h), not from earlier runs.
+// (engine/baselines/seed_solver.h), not from earlier runs.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "engine/broadphase/brute_force_broad_phase.h"
+#include "engine/baselines/brute_force_broad_phase.h"
 #include "engine/parallel/task_system.h"
 #include "tests/engine/broadphase/broad_phase_test_helpers.h"
 

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "engine/solver/seed_solver.h"
+#include "engine/baselines/seed_solver.h"
 #include "engine/solver/sequential_impulse_solver.h"
 #include "engine/world.h"
 #include "tests/engine/test_bodies.h"

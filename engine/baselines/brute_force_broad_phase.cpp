@@ -1,4 +1,4 @@
-#include "engine/broadphase/brute_force_broad_phase.h"
+#include "engine/baselines/brute_force_broad_phase.h"
 
 #include <algorithm>
 #include <cmath>

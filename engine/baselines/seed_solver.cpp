@@ -1,4 +1,4 @@
-#include "engine/solver/seed_solver.h"
+#include "engine/baselines/seed_solver.h"
 
 #include <algorithm>
 
