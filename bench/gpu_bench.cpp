@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/world.h"
 #include "bench/bench.h"
 #include "bench/drop_scene.h"
 #include "engine/parallel/task_system.h"

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/world.h"
 #include "engine/baselines/brute_force_broad_phase.h"
 #include "engine/broadphase/tree_broad_phase.h"
 #include "engine/narrowphase/narrow_phase.h"

@@ -5,6 +5,7 @@
 #include <malloc.h>
 #include <nlohmann/json.hpp>
 
+#include "engine/world.h"
 #include "bench/bullet_world.h"
 #include "bench/host_scaling.h"
 #include "engine/parallel/task_system.h"

@@ -16,12 +16,9 @@
 #include "engine/contacts/contact.h"
 #include "engine/contacts/contact_manifold.h"
 #include "engine/dynamics/rigid_body.h"
+#include "engine/world_settings.h"
 
 namespace physdbg {
-
-// Where a world's collision detection runs (scene key "collision").
-enum class CollisionDevice { Cpu, Gpu };
-const char* collisionDeviceName(CollisionDevice device);
 
 // One pair to test: body ids a < b, and the distance within which a separated
 // pair still gets speculative manifold points (the solver's contactReach).

@@ -1,5 +1,7 @@
 #include "reports/stage_report.h"
 
+#include "engine/world.h"
+
 namespace physdbg::reports {
 
 StageCounters countStages(const SceneDescription& scene, int steps, const std::string& layers) {

@@ -3,14 +3,20 @@
 // it came from (a JSON file or a built-in generator). The format is documented
 // in scenes/README.md.
 #include <functional>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "engine/world.h"
+#include "engine/dynamics/rigid_body.h"
+#include "engine/dynamics/step_schedule.h"
+#include "engine/world_settings.h"
 
 namespace physdbg {
+
+class CollisionOffload;
+class World;
 
 // Bad scene input. The message names the file, the key path and the problem.
 class SceneError : public std::runtime_error {

@@ -7,6 +7,7 @@
 
 #include "debugdraw/recording.h"
 #include "render/camera.h"
+#include "engine/world.h"
 #include "scenes/scene.h"
 #include "viewer/view_options.h"
 

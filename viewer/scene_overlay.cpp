@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <string>
 
+#include "engine/world.h"
+
 namespace physdbg::viewer {
 
 void addOverlay(const SceneDescription& scene, const World& world, const OverlayCounters& counters,

@@ -1,5 +1,7 @@
 #include "viewer/tree_events.h"
 
+#include "engine/world.h"
+
 namespace physdbg::viewer {
 namespace {
 

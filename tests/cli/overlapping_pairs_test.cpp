@@ -1,5 +1,6 @@
 // physdbg contacts finds its pairs with a box tree: it must give exactly the
 // pairs, in the order, that testing every box against every other gives.
+#include "engine/world.h"
 #include "cli/overlapping_pairs.h"
 
 #include <gtest/gtest.h>

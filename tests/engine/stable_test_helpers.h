@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <string>
 
+#include "engine/world.h"
 #include "scenes/scene.h"
 
 namespace physdbg::stable {

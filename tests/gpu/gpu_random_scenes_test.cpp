@@ -16,6 +16,7 @@
 #include "engine/colliders/sphere_collider.h"
 #include "gpu/gpu_collision.h"
 #include "scenes/body_builders.h"
+#include "engine/world.h"
 #include "scenes/scene.h"
 
 namespace physdbg::gpu {

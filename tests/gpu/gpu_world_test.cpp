@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "gpu/gpu_collision.h"
+#include "engine/world.h"
 #include "scenes/scene.h"
 #include "scenes/stacking_scenes.h"
 

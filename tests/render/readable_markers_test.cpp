@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "engine/world.h"
 #include "render/frame_batches.h"
 #include "render/renderer.h"
 #include "tests/support/render_test_support.h"

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <set>
 
+#include "engine/world.h"
 #include "scenes/design_scenes.h"
 
 namespace physdbg {

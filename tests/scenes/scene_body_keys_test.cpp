@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/world.h"
 #include "scenes/scene.h"
 
 namespace physdbg {

@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "engine/world.h"
 #include "scenes/scene.h"
 #include "scenes/scene_limits.h"
 

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "engine/world.h"
 #include "scenes/scene.h"
 
 namespace physdbg {

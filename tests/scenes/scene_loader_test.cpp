@@ -7,6 +7,7 @@
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/sphere_collider.h"
 #include "engine/broadphase/dynamic_aabb_tree.h"
+#include "engine/world.h"
 #include "scenes/scene.h"
 
 namespace physdbg {

@@ -1,5 +1,6 @@
 // The overlay's first line names the collision device when it is the GPU, so
 // a frame from the compute-shader path never passes for a CPU one.
+#include "engine/world.h"
 #include "viewer/scene_overlay.h"
 
 #include <gtest/gtest.h>

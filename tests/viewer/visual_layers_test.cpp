@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/world.h"
 #include "render/renderer.h"
 #include "tests/support/render_test_support.h"
 #include "scenes/scene.h"
