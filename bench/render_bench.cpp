@@ -19,6 +19,7 @@
 
 #include "bench/bench.h"
 #include "debugdraw/recording.h"
+#include "engine/debug/world_debug_draw.h"
 #include "scenes/stacking_scenes.h"
 #include "viewer/frame_pipeline.h"
 #include "viewer/scene_frames.h"
@@ -65,7 +66,7 @@ class BenchFrames {
  public:
   BenchFrames(const RenderBenchSize& size, int engineThreads) : world_(buildWorld(scene(size, engineThreads))) {
     debugdraw::Frame framing;
-    world_.emitDebugDraw(debugdraw::parseLayers("shapes"), framing);
+    emitDebugDraw(world_, debugdraw::parseLayers("shapes"), framing);
     view_ = viewer::toView(
         render::frameBoundsCamera(render::frameBounds(framing), double(size.width) / size.height));
   }
@@ -79,7 +80,7 @@ class BenchFrames {
     debugdraw::RecordedFrame out;
     out.index = index;
     out.view = view_;
-    world_.emitDebugDraw(layers_, out.frame);
+    emitDebugDraw(world_, layers_, out.frame);
     emitSeconds_ += secondsSince(start);
     return out;
   }

@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "debugdraw/primitives.h"
 #include "engine/broadphase/broad_phase.h"
 #include "engine/broadphase/tree_options.h"
 #include "engine/collision_offload.h"
@@ -141,26 +140,17 @@ class World {
   // touched points), plus the points sleeping bodies rest on, marked resting.
   std::vector<ShownContact> shownContacts() const;
 
-  // Appends the primitives of the requested layers; computes nothing for the
-  // layers that are not requested. With `counts`, adds how many primitives
-  // each layer appended, so a caller can say which layer drew nothing.
-  // Every primitive is tagged (debugdraw::Tag): its layer, its body or the
-  // pair it belongs to, and tree nodes, so a viewer can filter after the run.
-  void emitDebugDraw(debugdraw::LayerSet layers, debugdraw::Frame& frame,
-                     debugdraw::LayerCounts* counts = nullptr) const;
-  // Appends one BodyInfo per body, in body order, so a viewer can label,
-  // follow and highlight bodies without the engine. Names stay empty: the
-  // scene knows them, the world does not.
-  void emitBodies(debugdraw::Frame& frame) const;
-  // Metres per newton of the impulses layer's force arrows: the heaviest
-  // dynamic body's weight about as long as its size, on a 1-2-5 series.
-  // Depends on masses and shapes only, so it holds for the whole run.
-  double impulseScale() const;
+  // What the debugger reads (engine/debug/world_debug_draw.h): the body's
+  // broad-phase proxy (-1 once frozen or removed) and its fat box, and the
+  // points sleeping bodies rest on.
+  int proxyOf(BodyId id) const { return proxies_.at(id); }
+  const Aabb& fatBox(BodyId id) const;
+  const std::vector<ShownContact>& restingContacts() const { return resting_; }
 
  private:
   // The step's stages, in world.cpp in step order; the per-body ones in
-  // world_bodies.cpp; what the debugger shows in world_shown_contacts.cpp
-  // and world_debug_draw.cpp.
+  // world_bodies.cpp; the contacts the debugger shows in
+  // world_shown_contacts.cpp (drawn by engine/debug/world_debug_draw.h).
   void applyForces();
   void applyScheduledForces();
   void applyScheduledStates();
@@ -195,7 +185,6 @@ class World {
 
   std::vector<ShownContact> initialContacts() const;
   std::vector<BodyPair> overlappingBoxes(double margin) const;
-  std::vector<std::shared_ptr<const debugdraw::TriangleMesh>> hullMeshes() const;
 
   WorldSettings settings_;
   // Bodies, and their state by kind: one store each.

@@ -59,6 +59,11 @@ BodyId World::requireLive(BodyId id) const {
   return id;
 }
 
+const Aabb& World::fatBox(BodyId id) const {
+  if (proxies_.at(id) < 0) throw std::invalid_argument("body " + std::to_string(id) + " has no proxy");
+  return broadPhase_->fatBox(proxies_[id]);
+}
+
 RigidBody& World::body(BodyId id) {
   RigidBody& body = bodies_[requireLive(id)];
   if (!isEdited_[id]) {

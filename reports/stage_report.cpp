@@ -1,5 +1,6 @@
 #include "reports/stage_report.h"
 
+#include "engine/debug/world_debug_draw.h"
 #include "engine/world.h"
 
 namespace physdbg::reports {
@@ -27,7 +28,7 @@ StageCounters countStages(const SceneDescription& scene, int steps, const std::s
     counters.manifoldPoints += stats.manifoldPoints;
     counters.staticPairsTested += stats.staticPairsTested;
     frame.clear();
-    world.emitDebugDraw(layerSet, frame);
+    emitDebugDraw(world, layerSet, frame);
     counters.primitivesEmitted += static_cast<long long>(frame.primitiveCount());
   }
   return counters;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "debugdraw/frame_view.h"
+#include "engine/debug/world_debug_draw.h"
 #include "render/text_geometry.h"
 #include "viewer/scene_camera.h"
 #include "viewer/scene_overlay.h"
@@ -22,7 +23,7 @@ World simulateScene(const SceneDescription& scene, int steps) {
 render::Camera sceneCamera(const SceneDescription& scene, double aspect) {
   const World initial = buildWorld(scene);
   debugdraw::Frame framing;
-  initial.emitDebugDraw(debugdraw::parseLayers("shapes"), framing);
+  emitDebugDraw(initial, debugdraw::parseLayers("shapes"), framing);
   return chooseCamera(scene, framing, aspect);
 }
 
@@ -32,8 +33,8 @@ debugdraw::Frame sceneFrame(const SceneDescription& scene, const World& world, d
   selection.layers = layers;
   selection.imageWidth = imageWidth;
   debugdraw::Frame frame;
-  world.emitDebugDraw(debugdraw::layersNeeded(selection), frame);
-  world.emitBodies(frame);
+  emitDebugDraw(world, debugdraw::layersNeeded(selection), frame);
+  emitBodies(world, frame);
   if (layers.has(debugdraw::Layer::Overlay)) {
     OverlayCounters counters;
     counters.imageWidth = imageWidth;

@@ -10,6 +10,7 @@
 
 #include "debugdraw/frame_view.h"
 #include "debugdraw/ground_grid.h"
+#include "engine/debug/world_debug_draw.h"
 #include "viewer/scene_camera.h"
 #include "viewer/scene_overlay.h"
 
@@ -90,14 +91,14 @@ SceneFrames::SceneFrames(const SceneDescription& scene, const ViewOptions& optio
       world_(buildWorld(scene, std::move(collision))) {
   world_.keepContactHistory(true);
   dd::Frame framing;
-  world_.emitDebugDraw(dd::parseLayers("shapes"), framing);
+  emitDebugDraw(world_, dd::parseLayers("shapes"), framing);
   const double aspect = static_cast<double>(options_.width) / options_.height;
   dd::Frame bodies;
-  if (options_.camera.follow) world_.emitBodies(bodies);
+  if (options_.camera.follow) emitBodies(world_, bodies);
   const dd::BodyInfo* followed = options_.camera.follow ? &bodies.bodies.at(*options_.camera.follow) : nullptr;
   initialCamera_ = applyCameraOptions(chooseCamera(scene_, framing, aspect), options_.camera, followed, aspect);
   if (emitted_.has(dd::Layer::Grid)) {
-    if (bodies.bodies.empty()) world_.emitBodies(bodies);
+    if (bodies.bodies.empty()) emitBodies(world_, bodies);
     const auto [low, high] = groundGridBounds(bodies.bodies, initialCamera_.up);
     dd::emitGroundGrid(low, high, initialCamera_.up, grid_);
   }
@@ -128,7 +129,7 @@ render::Camera SceneFrames::camera(const dd::Frame& tagged) const {
 
 void SceneFrames::drawLayers(dd::Frame& out) {
   dd::LayerCounts emitted;
-  world_.emitDebugDraw(emitted_, out, &emitted);
+  emitDebugDraw(world_, emitted_, out, &emitted);
   // A shown tree is counted after --tree-depth (countShownTree).
   for (const auto& [name, layer] : dd::allLayers())
     if (layer != dd::Layer::Tree || purpose_ == FramePurpose::Record) layerCounts_.add(layer, emitted.of(layer));
@@ -140,7 +141,7 @@ void SceneFrames::drawBodies(dd::Frame& out) {
   const bool needed = purpose_ == FramePurpose::Record || selection_.labels || !selection_.highlight.empty() ||
                       selection_.follow || emitted_.has(dd::Layer::Sleep);
   if (!needed) return;
-  world_.emitBodies(out);
+  emitBodies(world_, out);
   for (dd::BodyInfo& body : out.bodies) {
     if (static_cast<std::size_t>(body.index) < scene_.bodyNames.size()) body.name = scene_.bodyNames[body.index];
   }

@@ -14,6 +14,7 @@
 #include "engine/broadphase/dynamic_aabb_tree.h"
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/sphere_collider.h"
+#include "engine/debug/world_debug_draw.h"
 #include "engine/world.h"
 #include "tests/engine/test_bodies.h"
 
@@ -135,16 +136,16 @@ TEST_P(BodyLifetimeTest, AbsentBodiesDrawNothingAndAreMarked) {
   const BodyId late = world.addBody(box(Vec3(3, 0.5, 0)));
   world.scheduleLifetime({late, 5, std::nullopt});
   debugdraw::Frame frame;
-  world.emitDebugDraw(debugdraw::parseLayers("shapes,aabbs,fat,velocities,contacts"), frame);
+  emitDebugDraw(world, debugdraw::parseLayers("shapes,aabbs,fat,velocities,contacts"), frame);
   for (const debugdraw::SolidBox& solid : frame.boxes) EXPECT_NE(solid.tag.body, static_cast<int>(late));
   for (const debugdraw::WireBox& wire : frame.wireBoxes) EXPECT_NE(wire.tag.body, static_cast<int>(late));
-  world.emitBodies(frame);
+  emitBodies(world, frame);
   ASSERT_EQ(frame.bodies.size(), 2u);
   EXPECT_FALSE(frame.bodies[0].absent);
   EXPECT_TRUE(frame.bodies[1].absent);
   for (int step = 0; step < 5; ++step) world.step();
   debugdraw::Frame after;
-  world.emitDebugDraw(debugdraw::parseLayers("shapes"), after);
+  emitDebugDraw(world, debugdraw::parseLayers("shapes"), after);
   EXPECT_EQ(after.boxes.size(), 2u);
 }
 

@@ -13,6 +13,7 @@
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/convex_mesh_collider.h"
 #include "engine/colliders/sphere_collider.h"
+#include "engine/debug/world_debug_draw.h"
 #include "engine/world.h"
 
 namespace physdbg {
@@ -29,7 +30,7 @@ dd::Frame wireOf(std::shared_ptr<const Collider> collider, const Vec3& position,
   definition.orientation = orientation;
   world.addBody(definition);
   dd::Frame frame;
-  world.emitDebugDraw(dd::parseLayers("wire"), frame);
+  emitDebugDraw(world, dd::parseLayers("wire"), frame);
   return frame;
 }
 
@@ -191,7 +192,7 @@ TEST(ColliderOutline, HullBodyDrawsItsEdgesWhereItsSolidIs) {
   definition.orientation = tilted;
   world.addBody(definition);
   dd::Frame frame;
-  world.emitDebugDraw(dd::parseLayers("shapes,wire"), frame);
+  emitDebugDraw(world, dd::parseLayers("shapes,wire"), frame);
   ASSERT_EQ(frame.meshes.size(), 1u);
   EXPECT_TRUE(frame.wireBoxes.empty());
   ASSERT_EQ(frame.lines.size(), 6u);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/colliders/box_collider.h"
+#include "engine/debug/world_debug_draw.h"
 #include "engine/world.h"
 #include "scenes/scene.h"
 
@@ -38,10 +39,10 @@ double drawnGroundForce(const World& world) {
   dd::LayerSet impulses;
   impulses.add(dd::Layer::Impulses);
   dd::Frame frame;
-  world.emitDebugDraw(impulses, frame);
+  emitDebugDraw(world, impulses, frame);
   double force = 0.0;
   for (const dd::Arrow& arrow : frame.arrows)
-    if (arrow.tag.body == 0) force += (arrow.to - arrow.from).y() / world.impulseScale();
+    if (arrow.tag.body == 0) force += (arrow.to - arrow.from).y() / impulseScale(world);
   return force;
 }
 

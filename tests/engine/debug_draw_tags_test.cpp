@@ -1,4 +1,4 @@
-// Tags on what World::emitDebugDraw emits: a viewer (replay --layers,
+// Tags on what emitDebugDraw (engine/debug/world_debug_draw.h) emits: a viewer (replay --layers,
 // --highlight, --tree-depth) filters recorded frames by them with no engine,
 // so every primitive must name its layer, its bodies and its tree node.
 #include <gtest/gtest.h>
@@ -13,6 +13,7 @@
 #include "engine/broadphase/dynamic_aabb_tree.h"
 #include "engine/broadphase/tree_debug_draw.h"
 #include "engine/colliders/box_collider.h"
+#include "engine/debug/world_debug_draw.h"
 #include "engine/world.h"
 #include "scenes/scene.h"
 #include "tests/engine/broadphase/broad_phase_test_helpers.h"
@@ -62,7 +63,7 @@ World steppedScene(const std::string& name, int steps) {
 
 dd::Frame drawn(const World& world, dd::LayerSet layers, dd::LayerCounts* counts = nullptr) {
   dd::Frame frame;
-  world.emitDebugDraw(layers, frame, counts);
+  emitDebugDraw(world, layers, frame, counts);
   return frame;
 }
 
@@ -256,7 +257,7 @@ TEST(DebugDrawTags, BodyInfoPerBodyMatchesTheFrame) {
   for (const Case& c : cases()) {
     const World world = steppedScene(c.scene, c.steps);
     dd::Frame frame = drawn(world, allLayers());
-    world.emitBodies(frame);
+    emitBodies(world, frame);
     ASSERT_EQ(frame.bodies.size(), world.bodyCount()) << describe(c);
     std::map<int, dd::Tag> fatOf;
     for (const auto& box : frame.wireBoxes)
@@ -295,7 +296,7 @@ TEST(DebugDrawTags, BodyInfoOfANonFiniteBodyKeepsItsIndexAndZeroVectors) {
   world.addBody({box, Vec3(5, 0, 0)});
   world.body(1).setLinearVelocity(Vec3(std::nan(""), 0, 0));
   dd::Frame frame;
-  world.emitBodies(frame);
+  emitBodies(world, frame);
   ASSERT_EQ(frame.bodies.size(), 2u);
   EXPECT_EQ(frame.bodies[1].index, 1);
   EXPECT_EQ(frame.bodies[1].position, Vec3::Zero());
@@ -335,7 +336,7 @@ TEST(DebugDrawTags, ImpulseArrowsOfARestingBoxAddUpToItsWeight) {
     world.clearContactHistory();
     world.step();
   }
-  EXPECT_DOUBLE_EQ(world.impulseScale(), 1.0 / 20.0);  // 29.4 N over a 1 m box, to 1-2-5: 1 m = 20 N
+  EXPECT_DOUBLE_EQ(impulseScale(world), 1.0 / 20.0);  // 29.4 N over a 1 m box, to 1-2-5: 1 m = 20 N
   dd::LayerCounts counts;
   const dd::Frame frame = drawn(world, only(dd::Layer::Impulses), &counts);
   ASSERT_EQ(frame.arrows.size(), 4u);  // the four corners of the bottom face
@@ -345,7 +346,7 @@ TEST(DebugDrawTags, ImpulseArrowsOfARestingBoxAddUpToItsWeight) {
     total += arrow.to - arrow.from;
   }
   const double weight = mass * 9.81;
-  EXPECT_NEAR(total.y() / world.impulseScale(), weight, 0.005 * weight);
+  EXPECT_NEAR(total.y() / impulseScale(world), weight, 0.005 * weight);
   EXPECT_NEAR(total.x(), 0.0, 1e-9);
   EXPECT_NEAR(total.z(), 0.0, 1e-9);
   ASSERT_EQ(frame.texts.size(), 1u);
@@ -356,9 +357,9 @@ TEST(DebugDrawTags, ImpulseArrowsOfARestingBoxAddUpToItsWeight) {
 
 TEST(DebugDrawTags, ImpulseScaleIsTheSameEveryFrame) {
   World world = buildWorld(resolveScene("default"));
-  const double scale = world.impulseScale();
+  const double scale = impulseScale(world);
   for (int step = 0; step < 50; ++step) world.step();
-  EXPECT_EQ(world.impulseScale(), scale);
+  EXPECT_EQ(impulseScale(world), scale);
   const double newtonsPerMetre = 1.0 / scale, decade = std::pow(10.0, std::floor(std::log10(newtonsPerMetre)));
   const double leading = newtonsPerMetre / decade;
   EXPECT_TRUE(std::abs(leading - 1) < 1e-9 || std::abs(leading - 2) < 1e-9 || std::abs(leading - 5) < 1e-9)

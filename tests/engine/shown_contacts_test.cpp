@@ -5,6 +5,7 @@
 
 #include <set>
 
+#include "engine/debug/world_debug_draw.h"
 #include "engine/world.h"
 #include "scenes/scene.h"
 
@@ -92,7 +93,7 @@ TEST(ShownContacts, TheSleepLayerOutlinesASleepingStackAsOneIsland) {
   for (int step = 0; step < 600 && !world.isAsleep(10); ++step) world.step();
   ASSERT_TRUE(world.isAsleep(10));
   debugdraw::Frame frame;
-  world.emitDebugDraw(debugdraw::parseLayers("sleep"), frame);
+  emitDebugDraw(world, debugdraw::parseLayers("sleep"), frame);
   ASSERT_EQ(frame.wireBoxes.size(), 11u);  // ten sleeping boxes, then the island
   const debugdraw::WireBox& island = frame.wireBoxes.back();
   for (BodyId id = 1; id <= 10; ++id) {

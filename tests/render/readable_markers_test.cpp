@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "engine/debug/world_debug_draw.h"
 #include "engine/world.h"
 #include "render/frame_batches.h"
 #include "render/renderer.h"
@@ -71,8 +72,8 @@ TEST(ReadableMarkers, ARestingContactNormalSpansTheMinimumOnScreen) {
   physdbg::World world = physdbg::buildWorld(scene);
   for (int step = 0; step < 30; ++step) world.step();
   dd::Frame all, arrows;
-  world.emitDebugDraw(dd::parseLayers("shapes,contacts"), all);
-  world.emitDebugDraw(dd::parseLayers("contacts"), arrows);
+  emitDebugDraw(world, dd::parseLayers("shapes,contacts"), all);
+  emitDebugDraw(world, dd::parseLayers("contacts"), arrows);
   arrows.points.clear();
   ASSERT_FALSE(arrows.arrows.empty());
   const physdbg::render::Camera camera = physdbg::render::frameBoundsCamera(physdbg::render::frameBounds(all), 160.0 / 120);

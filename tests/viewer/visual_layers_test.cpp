@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/debug/world_debug_draw.h"
 #include "engine/world.h"
 #include "render/renderer.h"
 #include "tests/support/render_test_support.h"
@@ -64,12 +65,12 @@ TEST_P(LayerColors, AppearInsideTheLayersBoundsAndOnlyWhenOn) {
   for (int i = 0; i < c.steps; ++i) world.step();
   physdbg::render::Renderer renderer({width, height, 0});
   dd::Frame all;
-  world.emitDebugDraw(dd::parseLayers("shapes,aabbs,fat,tree,contacts,velocities,pairs"), all);
+  emitDebugDraw(world, dd::parseLayers("shapes,aabbs,fat,tree,contacts,velocities,pairs"), all);
   const physdbg::render::Camera camera =
       physdbg::render::frameBoundsCamera(physdbg::render::frameBounds(all), double(width) / height);
 
   dd::Frame on;
-  world.emitDebugDraw(dd::parseLayers(c.layer), on);
+  emitDebugDraw(world, dd::parseLayers(c.layer), on);
   ASSERT_FALSE(on.empty()) << c.layer;
   on.texts.clear();  // the tree's depth legend is screen text, outside any world bounds
   const Match match = findColor(renderer.render(on, camera), c.color);
@@ -94,7 +95,7 @@ TEST_P(LayerColors, AppearInsideTheLayersBoundsAndOnlyWhenOn) {
   dd::LayerSet others = dd::parseLayers("aabbs,fat,tree,contacts,velocities,pairs");
   others.bits &= ~dd::parseLayers(c.layer).bits;
   dd::Frame off;
-  world.emitDebugDraw(others, off);
+  emitDebugDraw(world, others, off);
   EXPECT_LE(findColor(renderer.render(off, camera), c.color).count, 2) << c.layer;
 }
 
@@ -121,7 +122,7 @@ TEST(WireLayer, DrawsASphereAsACircleNotItsBoundingBox) {
       "lone sphere");
   const physdbg::World world = physdbg::buildWorld(scene);
   dd::Frame frame;
-  world.emitDebugDraw(dd::parseLayers("wire"), frame);
+  emitDebugDraw(world, dd::parseLayers("wire"), frame);
   constexpr int smallWidth = 160, smallHeight = 120;
   physdbg::render::Camera camera;  // looking down -z at the origin
   camera.orthographic = true;

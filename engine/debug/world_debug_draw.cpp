@@ -1,5 +1,5 @@
-// Turns the world's state into debug-draw primitives, one function per layer.
-// Only the requested layers are computed.
+#include "engine/debug/world_debug_draw.h"
+
 #include <cmath>
 #include <cstdio>
 
@@ -226,9 +226,25 @@ std::vector<int> shownContactCounts(const std::vector<ShownContact>& points, std
   return counts;
 }
 
+// One drawing mesh per convex collider, shared by the bodies that share it;
+// ids follow body order so they are the same run after run.
+std::vector<std::shared_ptr<const dd::TriangleMesh>> hullMeshes(const std::vector<RigidBody>& bodies) {
+  std::vector<std::shared_ptr<const dd::TriangleMesh>> meshes(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const Collider* collider = &bodies[i].collider();
+    if (collider->kind() != ColliderKind::ConvexMesh) continue;
+    for (std::size_t j = 0; j < i && !meshes[i]; ++j) {
+      if (&bodies[j].collider() == collider) meshes[i] = meshes[j];
+    }
+    if (!meshes[i]) meshes[i] = hullMesh(static_cast<const ConvexMeshCollider&>(*collider), i + 1);
+  }
+  return meshes;
+}
+
 }  // namespace
 
-void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts* counts) const {
+void emitDebugDraw(const World& world, dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts* counts) {
+  const std::vector<RigidBody>& bodies = world.bodies();
   if (layers.empty()) return;
   // Runs one emission, gives what it appended the fields of `tag` it did not
   // set itself (the layer always) and, when counting, counts it for the layer.
@@ -240,16 +256,16 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
     if (counts) counts->add(static_cast<dd::Layer>(tag.layer), frame.primitiveCount() - before);
   };
   std::vector<std::shared_ptr<const dd::TriangleMesh>> meshes;
-  if (layers.has(dd::Layer::Shapes)) meshes = hullMeshes();
+  if (layers.has(dd::Layer::Shapes)) meshes = hullMeshes(bodies);
   double typicalSize = 0;
   const bool showContacts =
       layers.has(dd::Layer::Contacts) || layers.has(dd::Layer::Aabbs) || layers.has(dd::Layer::Impulses);
-  const std::vector<ShownContact> shown = showContacts ? shownContacts() : std::vector<ShownContact>{};
-  const std::vector<int> contactState = contactStates(shown, bodies_.size());
-  const DynamicAabbTree* broadPhaseTree = tree();
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    const RigidBody& body = bodies_[i];
-    if (!body.hasFiniteState() || !present_[i]) continue;
+  const std::vector<ShownContact> shown = showContacts ? world.shownContacts() : std::vector<ShownContact>{};
+  const std::vector<int> contactState = contactStates(shown, bodies.size());
+  const DynamicAabbTree* broadPhaseTree = world.tree();
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const RigidBody& body = bodies[i];
+    if (!body.hasFiniteState() || !world.isPresent(i)) continue;
     const Aabb box = body.collider().worldBounds(body.transform());
     if (!body.isStatic()) typicalSize = std::max(typicalSize, box.halfExtents().maxCoeff());
     const auto tagOfBody = [i](dd::Layer layer) { return dd::tagOf(layer, static_cast<int>(i)); };
@@ -262,9 +278,9 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
       emit(tagOfBody(dd::Layer::Aabbs), [&] {
         frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), boxColor(contactState[i])});
       });
-    if (layers.has(dd::Layer::Fat) && proxies_[i] >= 0)
-      emit(fatTag(i, broadPhaseTree, proxies_[i]), [&] {
-        const Aabb& fat = broadPhase_->fatBox(proxies_[i]);
+    if (layers.has(dd::Layer::Fat) && world.proxyOf(i) >= 0)
+      emit(fatTag(i, broadPhaseTree, world.proxyOf(i)), [&] {
+        const Aabb& fat = world.fatBox(i);
         frame.wireBoxes.push_back({fat.center(), Quat::Identity(), fat.halfExtents(), dd::colors::fatLayer});
       });
     if (layers.has(dd::Layer::Velocities) && !body.isStatic() && body.linearVelocity() != Vec3::Zero())
@@ -275,13 +291,13 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
     // recording of every layer replays any choice of them: the viewer darkens
     // the solids of sleeping bodies instead of these outlines when shapes show
     // (debugdraw/frame_view.cpp).
-    if (layers.has(dd::Layer::Sleep) && asleep_[i])
+    if (layers.has(dd::Layer::Sleep) && world.isAsleep(i))
       emit(tagOfBody(dd::Layer::Sleep), [&] {
         frame.wireBoxes.push_back({box.center(), Quat::Identity(), box.halfExtents(), {0.5f, 0.3f, 0.7f, 1}});
       });
   }
   if (layers.has(dd::Layer::Sleep))
-    for (const Aabb& island : sleepingIslandBoxes(bodies_, resting_))
+    for (const Aabb& island : sleepingIslandBoxes(bodies, world.restingContacts()))
       emit(dd::tagOf(dd::Layer::Sleep), [&] {  // a whole island, no one body
         frame.wireBoxes.push_back({island.center(), Quat::Identity(), island.halfExtents() + Vec3::Constant(0.05),
                                    sleepingIsland});
@@ -295,13 +311,13 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
   if (layers.has(dd::Layer::Contacts))
     emit(dd::tagOf(dd::Layer::Contacts), [&] { emitShownContacts(shown, std::max(typicalSize, 0.2), frame); });
   if (layers.has(dd::Layer::Impulses))
-    emit(dd::tagOf(dd::Layer::Impulses), [&] { emitImpulses(shown, settings_.dt, impulseScale(), frame); });
+    emit(dd::tagOf(dd::Layer::Impulses), [&] { emitImpulses(shown, world.settings().dt, impulseScale(world), frame); });
   if (layers.has(dd::Layer::Pairs))
     emit(dd::tagOf(dd::Layer::Pairs), [&] {
-      for (const BodyPair& pair : pairs_) {
+      for (const BodyPair& pair : world.candidatePairs()) {
         // Found before a removal, or before a body was frozen (its position may be NaN).
-        if (!present_[pair.a] || !present_[pair.b] || frozen_[pair.a] || frozen_[pair.b]) continue;
-        frame.lines.push_back({bodies_[pair.a].position(), bodies_[pair.b].position(), {0.9f, 0.5f, 0.9f, 1},
+        if (!world.isPresent(pair.a) || !world.isPresent(pair.b) || world.isFrozen(pair.a) || world.isFrozen(pair.b)) continue;
+        frame.lines.push_back({bodies[pair.a].position(), bodies[pair.b].position(), {0.9f, 0.5f, 0.9f, 1},
                                dd::tagOf(dd::Layer::Pairs, static_cast<int>(pair.a), static_cast<int>(pair.b))});
       }
     });
@@ -310,11 +326,11 @@ void World::emitDebugDraw(dd::LayerSet layers, dd::Frame& frame, dd::LayerCounts
 // The heaviest dynamic body's weight drawn about as long as that body is big,
 // rounded so the legend reads "1 m = 200 N". From masses and shapes only, so
 // the scale stays the same from frame to frame and arrows compare.
-double World::impulseScale() const {
+double impulseScale(const World& world) {
   const RigidBody* heaviest = nullptr;
-  for (const RigidBody& body : bodies_)
+  for (const RigidBody& body : world.bodies())
     if (!body.isStatic() && (!heaviest || body.mass() > heaviest->mass())) heaviest = &body;
-  const double gravity = settings_.gravity.norm() > 0.0 ? settings_.gravity.norm() : 9.81;
+  const double gravity = world.settings().gravity.norm() > 0.0 ? world.settings().gravity.norm() : 9.81;
   double weight = gravity, size = 1.0;  // 1 kg, 1 m without a dynamic body
   if (heaviest) {
     const Aabb local = heaviest->collider().localBounds();
@@ -329,19 +345,20 @@ double World::impulseScale() const {
 // body without the engine. A body whose state stopped being finite keeps its
 // index and flags, and zero vectors (a recording holds no NaN). A removed
 // body is listed too, marked absent, so indices mean the same in every frame.
-void World::emitBodies(dd::Frame& frame) const {
-  const std::vector<int> contactCounts = shownContactCounts(shownContacts(), bodies_.size());
-  const DynamicAabbTree* broadPhaseTree = tree();
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    const RigidBody& body = bodies_[i];
+void emitBodies(const World& world, dd::Frame& frame) {
+  const std::vector<RigidBody>& bodies = world.bodies();
+  const std::vector<int> contactCounts = shownContactCounts(world.shownContacts(), bodies.size());
+  const DynamicAabbTree* broadPhaseTree = world.tree();
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const RigidBody& body = bodies[i];
     dd::BodyInfo& info = frame.bodies.emplace_back();
     info.index = static_cast<std::int32_t>(i);
     info.contacts = contactCounts[i];
-    info.treeLeaf = broadPhaseTree ? proxies_[i] : -1;
-    info.treeParent = leafParent(broadPhaseTree, proxies_[i]);
+    info.treeLeaf = broadPhaseTree ? world.proxyOf(i) : -1;
+    info.treeParent = leafParent(broadPhaseTree, world.proxyOf(i));
     info.isStatic = body.isStatic();
-    info.asleep = asleep_[i];
-    info.absent = !present_[i];
+    info.asleep = world.isAsleep(i);
+    info.absent = !world.isPresent(i);
     if (!body.hasFiniteState()) continue;
     const Aabb bounds = body.collider().worldBounds(body.transform());
     info.position = body.position();
@@ -350,21 +367,6 @@ void World::emitBodies(dd::Frame& frame) const {
     info.boundsMin = bounds.min;
     info.boundsMax = bounds.max;
   }
-}
-
-// One drawing mesh per convex collider, shared by the bodies that share it;
-// ids follow body order so they are the same run after run.
-std::vector<std::shared_ptr<const dd::TriangleMesh>> World::hullMeshes() const {
-  std::vector<std::shared_ptr<const dd::TriangleMesh>> meshes(bodies_.size());
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    const Collider* collider = &bodies_[i].collider();
-    if (collider->kind() != ColliderKind::ConvexMesh) continue;
-    for (std::size_t j = 0; j < i && !meshes[i]; ++j) {
-      if (&bodies_[j].collider() == collider) meshes[i] = meshes[j];
-    }
-    if (!meshes[i]) meshes[i] = hullMesh(static_cast<const ConvexMeshCollider&>(*collider), i + 1);
-  }
-  return meshes;
 }
 
 }  // namespace physdbg
