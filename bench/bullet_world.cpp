@@ -122,6 +122,20 @@ Vec3 BulletWorld::position(std::size_t body) const {
   return Vec3(p.x(), p.y(), p.z());
 }
 
+int BulletWorld::touchingPairs(double gap) const {
+  int touching = 0;
+  btDispatcher& dispatcher = impl_->dispatcher;
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+    for (int c = 0; c < manifold->getNumContacts(); ++c)
+      if (double(manifold->getContactPoint(c).getDistance()) <= gap) {
+        ++touching;
+        break;
+      }
+  }
+  return touching;
+}
+
 double BulletWorld::kineticEnergy() const {
   double energy = 0.0;
   for (const auto& body : impl_->bodies) {
@@ -152,6 +166,7 @@ std::size_t BulletWorld::bodyCount() const { return 0; }
 Vec3 BulletWorld::position(std::size_t) const { return Vec3::Zero(); }
 Vec3 BulletWorld::linearVelocity(std::size_t) const { return Vec3::Zero(); }
 double BulletWorld::largestPenetration() const { return 0.0; }
+int BulletWorld::touchingPairs(double) const { return 0; }
 double BulletWorld::kineticEnergy() const { return 0.0; }
 
 #endif

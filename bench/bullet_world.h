@@ -37,6 +37,9 @@ class BulletWorld {
   // (their distances are from before that step's integration); 0 when none overlap.
   double largestPenetration() const;
   double kineticEnergy() const;           // of the dynamic bodies, J
+  // Pairs with a contact point no farther apart than `gap` (m): what
+  // physdbg counts as touching pairs.
+  int touchingPairs(double gap) const;
 
  private:
   struct Impl;

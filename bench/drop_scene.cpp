@@ -12,6 +12,7 @@ namespace {
 
 constexpr double kSpacing = 1.2;
 constexpr double kWallHalfThickness = 0.5;
+constexpr double kJitter = 0.05;  // m, at most, sideways
 
 BodyDefinition wall(const Vec3& center, const Vec3& halfExtents) {
   BodyDefinition body;
@@ -24,7 +25,15 @@ BodyDefinition wall(const Vec3& center, const Vec3& halfExtents) {
 
 }  // namespace
 
-DropScene dropScene(int count, DropShape shape) {
+double dropJitter(std::uint64_t k) {
+  std::uint64_t z = k + 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  z ^= z >> 31;
+  return 2.0 * static_cast<double>(z >> 11) * 0x1.0p-53 - 1.0;
+}
+
+DropScene dropScene(int count, DropShape shape, bool jittered) {
   if (count < 1) throw std::invalid_argument("dropScene: count must be at least 1");
   const int side = static_cast<int>(std::ceil(std::sqrt(count / 4.0)));
   const int layers = (count + side * side - 1) / (side * side);
@@ -32,7 +41,7 @@ DropScene dropScene(int count, DropShape shape) {
   drop.container.innerHalfWidth = 0.5 * side * kSpacing;
   drop.container.wallTop = layers * kSpacing + 2.0;
   SceneDescription& scene = drop.scene;
-  scene.name = shape == DropShape::Sphere ? "drop_spheres" : "drop_boxes";
+  scene.name = std::string(shape == DropShape::Sphere ? "drop_spheres" : "drop_boxes") + (jittered ? "" : "_columns");
   scene.description = std::to_string(count) + " bodies dropped into an open container";
   scene.steps = 600;
   scene.world.allowSleep = false;
@@ -53,6 +62,10 @@ DropScene dropScene(int count, DropShape shape) {
     body.collider = collider;
     body.position = Vec3((cell % side - 0.5 * (side - 1)) * kSpacing, 1.0 + layer * kSpacing,
                          (cell / side - 0.5 * (side - 1)) * kSpacing);
+    if (jittered) {
+      const auto k = static_cast<std::uint64_t>(i);
+      body.position += kJitter * Vec3(dropJitter(2 * k), 0.0, dropJitter(2 * k + 1));
+    }
     body.material = {0.2, 0.5, 0.5};
     scene.bodies.push_back(body);
   }

@@ -12,6 +12,7 @@ Benchmark gpuBenchmark();
 Benchmark dropBenchmark();
 Benchmark pyramidBenchmark();
 Benchmark sleepingBenchmark();
+Benchmark joltPyramidBenchmark();
 
 // Each benchmark lives in its own file and is listed here, in output order.
 std::vector<Benchmark> allBenchmarks() {
@@ -25,6 +26,7 @@ std::vector<Benchmark> allBenchmarks() {
 #endif
   benchmarks.push_back(dropBenchmark());
   benchmarks.push_back(pyramidBenchmark());
+  benchmarks.push_back(joltPyramidBenchmark());
   benchmarks.push_back(sleepingBenchmark());
 #ifdef PHYSDBG_HAVE_RENDER
   benchmarks.push_back(gpuBenchmark());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <malloc.h>
 #include <nlohmann/json.hpp>
 
@@ -45,6 +46,7 @@ EngineRun runOurs(SceneDescription scene, int steps, const BenchOptions& options
     run.profile += world.lastStepStats().profile;
   });
   run.heapBytes = heapInUse() - heapBefore;
+  run.contacts = world.lastStepStats().contacts;
   for (const RigidBody& body : world.bodies()) {
     run.finalPositions.push_back(body.position());
     if (!body.isStatic()) run.kineticEnergy += body.kineticEnergy();
@@ -64,6 +66,8 @@ EngineRun runBullet(const SceneDescription& scene, int steps, bool allowSleep, b
   run.heapBytes = heapInUse() - heapBefore;
   for (std::size_t i = 0; i < world.bodyCount(); ++i) run.finalPositions.push_back(world.position(i));
   run.kineticEnergy = world.kineticEnergy();
+  // Within physdbg's touching gap (SolverSettings::linearSlop), as it counts.
+  run.contacts = world.touchingPairs(scene.world.solver.linearSlop);
   run.ran = true;
   return run;
 }
@@ -84,6 +88,46 @@ void addThreadFields(nlohmann::json& record, int threads, double msPerStep, std:
   record["threads"] = threads;
   if (threads > 1 && singleThreadMs && msPerStep > 0.0) record["scaling"] = *singleThreadMs / msPerStep;
   if (threads > 1) record["host_scaling"] = measureHostScaling(threads);  // taken just after the run
+}
+
+namespace {
+
+struct WorkSummary {
+  double meanHeight = 0.0;
+  int outside = 0;
+};
+
+WorkSummary summarise(const EngineRun& run, const WorkCheck& check) {
+  WorkSummary summary;
+  std::size_t counted = 0;
+  for (std::size_t i = check.firstDynamic; i < run.finalPositions.size(); ++i) {
+    summary.meanHeight += run.finalPositions[i].y();
+    ++counted;
+    if (check.outside && check.outside(run.finalPositions[i])) ++summary.outside;
+  }
+  if (counted > 0) summary.meanHeight /= static_cast<double>(counted);
+  return summary;
+}
+
+}  // namespace
+
+void addWorkFields(nlohmann::json& record, const EngineRun& ours, const EngineRun& peer, const WorkCheck& check) {
+  const WorkSummary mine = summarise(ours, check);
+  record["ours_contacts"] = ours.contacts;
+  record["ours_mean_height"] = mine.meanHeight;
+  record["ours_outside"] = mine.outside;
+  if (!peer.ran) {
+    record["same_work"] = nullptr;
+    return;
+  }
+  const WorkSummary theirs = summarise(peer, check);
+  record["peer_contacts"] = peer.contacts;
+  record["peer_mean_height"] = theirs.meanHeight;
+  record["peer_outside"] = theirs.outside;
+  const double contactGap = std::abs(ours.contacts - peer.contacts);
+  record["same_work"] = contactGap <= 0.2 * std::max(ours.contacts, peer.contacts) &&
+                        std::abs(mine.meanHeight - theirs.meanHeight) <= 0.05 * check.bodySize &&
+                        mine.outside == 0 && theirs.outside == 0;
 }
 
 double largestDisplacement(const EngineRun& run) {

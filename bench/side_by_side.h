@@ -2,6 +2,7 @@
 // Runs one scene in physdbg and in Bullet for the same number of steps and
 // keeps what the scene benchmarks compare: time per step, final kinetic
 // energy and final positions (in scene body order).
+#include <functional>
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <vector>
@@ -23,7 +24,23 @@ struct EngineRun {
   // process do not hide behind memory an earlier run freed.
   double heapBytes = 0.0;
   double firstStepMs = 0.0;  // with warm-up: the step taken before the timed ones
+  int contacts = 0;          // touching pairs after the last step
 };
+
+// Whether two runs of one scene did the same work: each engine's final
+// touching pairs, mean height of the dynamic bodies and bodies outside (as
+// `outside` says), and the verdict: contact counts within 20% of the larger,
+// mean heights within 5% of the body size, nobody outside. A benchmark whose
+// engines ended in different states (one pile balanced, the other toppled)
+// compares different work, and its ratio says nothing.
+struct WorkCheck {
+  std::size_t firstDynamic = 0;  // scene body index of the first dynamic body
+  double bodySize = 1.0;         // m
+  std::function<bool(const Vec3&)> outside;
+};
+// Adds ours_/peer_ contacts, mean_height, outside and same_work (null
+// without a peer) to `record`.
+void addWorkFields(nlohmann::json& record, const EngineRun& ours, const EngineRun& peer, const WorkCheck& check);
 
 // With options.solver, physdbg runs the scene under that solver, on
 // `threads` threads (0 every core).

@@ -29,10 +29,13 @@ void printRow(const nlohmann::json& record) {
       record.value("ratio_min", none).is_number()
           ? "  (" + formatNumber(record["ratio_min"]) + "-" + formatNumber(record["ratio_max"]) + ")"
           : "";
-  std::printf("%-34s %8s %7s %12s %-22s %12s %8s%s\n", formatNumber(record["name"]).c_str(),
+  // A row whose engines ended in different states compares different work.
+  const bool differentWork = record.value("same_work", none).is_boolean() && !record["same_work"].get<bool>();
+  std::printf("%-34s %8s %7s %12s %-22s %12s %8s%s%s\n", formatNumber(record["name"]).c_str(),
               formatNumber(record["n"]).c_str(), formatNumber(record.value("threads", none)).c_str(),
               formatNumber(record["ours_ms"]).c_str(), formatNumber(record["peer"]).c_str(),
-              formatNumber(record["peer_ms"]).c_str(), formatNumber(record["ratio"]).c_str(), range.c_str());
+              formatNumber(record["peer_ms"]).c_str(), formatNumber(record["ratio"]).c_str(), range.c_str(),
+              differentWork ? "  NOT THE SAME WORK (same_work false)" : "");
   std::fflush(stdout);
 }
 
@@ -62,14 +65,14 @@ int runBench(const std::vector<std::string>& args) {
         "per case the run with the median ratio, with every run's ratio (ratio_runs) and their "
         "range"},
        {"--solver", "", "seed|sequential_impulse",
-        "physdbg's contact solver in the scene benchmarks (drop, pyramid; seed runs only it)"},
+        "physdbg's contact solver in the scene benchmarks (drop, pyramid, jolt_pyramid, sleeping; seed runs only it)"},
        {"--threads", "", "N",
-        "physdbg's threads in the scene benchmarks (drop, pyramid) and tree \"moving\": N alone (0 "
-        "every core); by default one row on 1 thread and one on every core, each with its ratio to "
-        "Bullet"},
+        "physdbg's threads in the scene benchmarks (drop, pyramid, jolt_pyramid, sleeping) and tree "
+        "\"moving\": N alone (0 every core); by default one row on 1 thread and one on every core, each "
+        "with its ratio to Bullet"},
        {"--collision", "", "cpu|gpu",
-        "where physdbg's collision detection runs in the scene benchmarks (drop, pyramid): cpu "
-        "(default) or compute shaders on the --backend context"},
+        "where physdbg's collision detection runs in the scene benchmarks (drop, pyramid, jolt_pyramid, "
+        "sleeping): cpu (default) or compute shaders on the --backend context"},
        {"--backend", "", "osmesa|egl",
         "GL context of the gpu benchmark: OSMesa's llvmpipe (default) or EGL, which reaches a GPU"}},
       0,

@@ -52,6 +52,38 @@ SceneDescription pyramidScene(int base, const Vec3& origin) {
   return scene;
 }
 
+SceneDescription joltPyramidScene() {
+  constexpr int height = 15;
+  constexpr double size = 2.0, separation = 0.5, half = 0.5 * size;
+  SceneDescription scene;
+  scene.name = "jolt_pyramid";
+  scene.description = "Jolt's PerformanceTest pyramid: 1240 boxes of 2 m in 15 layers, sleeping off";
+  scene.steps = 500;
+  scene.layers = "shapes,overlay";
+  scene.world.allowSleep = false;
+  BodyDefinition floor;
+  floor.collider = std::make_shared<BoxCollider>(Vec3(50, 1, 50));
+  floor.position = Vec3(0, -1, 0);
+  floor.isStatic = true;
+  floor.material = {0.0, 0.2, 0.2};
+  scene.bodies.push_back(floor);
+  const auto box = std::make_shared<BoxCollider>(Vec3::Constant(half));
+  for (int i = 0; i < height; ++i) {
+    const double shift = (i & 1) ? half : 0.0;
+    // x fastest, then z, as a scene file's `repeat` lists its copies.
+    for (int k = i / 2; k < height - (i + 1) / 2; ++k)
+      for (int j = i / 2; j < height - (i + 1) / 2; ++j) {
+        BodyDefinition body;
+        body.collider = box;
+        body.mass = 1000.0 * size * size * size;
+        body.material = {0.0, 0.2, 0.2};
+        body.position = Vec3(-height + size * j + shift, 1.0 + (size + separation) * i, -height + size * k + shift);
+        scene.bodies.push_back(body);
+      }
+  }
+  return scene;
+}
+
 std::vector<BuiltinScene> stackingScenes() {
   return {
       {"stack", "10 unit boxes stacked on a floor", [] { return stackScene(10); }},

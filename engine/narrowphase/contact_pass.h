@@ -95,7 +95,8 @@ class ContactPass {
   const std::vector<RigidBody>& bodies() const { return *bodies_; }
   const std::vector<BodyPair>& pairs() const { return *pairs_; }
   const MeasuredBody& measured(std::uint32_t id) const { return measured_[pairPlace_[id]]; }
-  void parallelFor(std::size_t count, std::size_t grain, const std::function<void(std::size_t, std::size_t)>& body) const;
+  void parallelFor(std::size_t count, std::size_t grain,
+                   const std::function<void(std::size_t, std::size_t)>& body) const;
   PairOutcome screenPair(const BodyPair& pair, const StepContext& context) const;
   PairOutcome answerPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer) const;
   void measureBodies(const StepContext& context);

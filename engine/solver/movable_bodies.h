@@ -17,7 +17,8 @@ struct MovableBodies {
 
   MovableBodies() = default;
   // From the flags alone (tests, baselines): lists and ranks them, O(bodies).
-  MovableBodies(std::vector<bool> movable) : flags(std::move(movable)), rank(flags.size(), 0) {  // NOLINT: implicit on purpose
+  // Implicit on purpose: a flag vector stands for the bodies it flags.
+  MovableBodies(std::vector<bool> movable) : flags(std::move(movable)), rank(flags.size(), 0) {  // NOLINT
     for (std::uint32_t id = 0; id < flags.size(); ++id)
       if (flags[id]) {
         rank[id] = static_cast<std::uint32_t>(ids.size());

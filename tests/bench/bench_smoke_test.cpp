@@ -53,7 +53,7 @@ TEST(Benchmarks, SleepingBenchmarkDoesTheSameWorkWithAndWithoutSleepers) {
 // asks for.
 TEST(Benchmarks, SceneBenchmarksReportTheirThreads) {
   for (const Benchmark& benchmark : allBenchmarks()) {
-    if (benchmark.name != "drop" && benchmark.name != "pyramid") continue;
+    if (benchmark.name != "drop" && benchmark.name != "pyramid" && benchmark.name != "jolt_pyramid") continue;
     SCOPED_TRACE(benchmark.name);
     BenchOptions options;
     options.quick = true;

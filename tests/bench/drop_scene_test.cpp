@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <stdexcept>
 
@@ -14,7 +16,7 @@ namespace {
 
 // NOTES.md: footprint ceil(sqrt(N/4)) cells of 1.2 m, first layer at y = 1.
 TEST(DropScene, GridFollowsTheSpecification) {
-  const DropScene drop = dropScene(1000, DropShape::Sphere);
+  const DropScene drop = dropScene(1000, DropShape::Sphere, false);
   ASSERT_EQ(drop.scene.bodies.size(), 1005u);
   EXPECT_DOUBLE_EQ(drop.container.innerHalfWidth, 0.5 * 16 * 1.2);
   double lowest = 1e9, highest = -1e9;
@@ -28,6 +30,31 @@ TEST(DropScene, GridFollowsTheSpecification) {
   EXPECT_DOUBLE_EQ(highest, 1.0 + 3 * 1.2);  // 1000 bodies on 16 x 16 cells: 4 layers
   EXPECT_LT(highest + 0.5, drop.container.wallTop);
   EXPECT_FALSE(drop.scene.world.allowSleep);
+}
+
+// The jitter is the documented formula: splitmix64's first output for state
+// k (0xe220a8397b1dcdaf for k = 0), as a number in [-1, 1); each body moves
+// sideways by at most 5 cm, never up or down, the same every time.
+TEST(DropScene, JitterIsTheDocumentedFormula) {
+  EXPECT_EQ(dropJitter(0), 2.0 * static_cast<double>(0xe220a8397b1dcdafULL >> 11) * 0x1.0p-53 - 1.0);
+  const DropScene columns = dropScene(1000, DropShape::Sphere, false);
+  const DropScene jittered = dropScene(1000, DropShape::Sphere);
+  ASSERT_EQ(jittered.scene.bodies.size(), columns.scene.bodies.size());
+  double largest = 0.0, sumX = 0.0;
+  for (std::size_t i = jittered.firstDropped; i < jittered.scene.bodies.size(); ++i) {
+    const Vec3 offset = jittered.scene.bodies[i].position - columns.scene.bodies[i].position;
+    const auto k = static_cast<std::uint64_t>(i - jittered.firstDropped);
+    EXPECT_EQ(offset.y(), 0.0);
+    EXPECT_NEAR(offset.x(), 0.05 * dropJitter(2 * k), 1e-12) << i;  // the subtraction rounds at 10 m
+    EXPECT_NEAR(offset.z(), 0.05 * dropJitter(2 * k + 1), 1e-12) << i;
+    largest = std::max(largest, offset.cwiseAbs().maxCoeff());
+    sumX += offset.x();
+  }
+  EXPECT_LE(largest, 0.05);
+  EXPECT_GT(largest, 0.04);  // the offsets span their range
+  EXPECT_LT(std::abs(sumX) / 1000.0, 0.005);  // and centre on zero
+  for (std::size_t i = 0; i < jittered.scene.bodies.size(); ++i)
+    EXPECT_EQ(dropScene(1000, DropShape::Sphere).scene.bodies[i].position, jittered.scene.bodies[i].position);
 }
 
 TEST(DropScene, LeavingTheContainerIsDetected) {
