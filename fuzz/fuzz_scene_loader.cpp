@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "engine/world.h"
 #include "scenes/scene.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
