@@ -1,4 +1,4 @@
-// Islands sleep and wake as a whole (World::updateSleep, World::wake). The
+// Islands sleep and wake as a whole (SleepIslands::findSleepers, World::wake). The
 // old rule vetoed sleep one contact at a time, so a body two contacts away
 // from a moving one could fall asleep and be woken on the next step. These
 // worlds keep one body moving forever (a frictionless sphere spinning in
