@@ -14,6 +14,7 @@
 // must still be asleep where it started.
 #include <cmath>
 #include <memory>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "bench/bench.h"
@@ -98,22 +99,19 @@ void runSleepingBenchmark(const BenchOptions& options, const BenchSink& sink) {
     record["threads"] = threads;
     record["steps"] = steps;
     addStageFields(record, ours, steps);
-    record["ours_first_step_ms"] = ours.firstStepMs;
-    record["ours_alone_ms"] = oursAlone.msPerStep;
-    record["ours_over_alone"] = ours.msPerStep / oursAlone.msPerStep;
-    record["ours_bytes_per_body"] = ours.heapBytes / static_cast<double>(beside.bodies.size());
-    record["ours_sphere_mismatch"] = sphereMismatch(oursAlone, ours);
-    record["ours_largest_prop_move"] = largestPropMove(ours);
-    bool sameWork = sphereMismatch(oursAlone, ours) == 0.0 && largestPropMove(ours) == 0.0;
-    if (peer.ran) {
-      record["peer_first_step_ms"] = peer.firstStepMs;
-      record["peer_alone_ms"] = peerAlone.msPerStep;
-      record["peer_over_alone"] = peer.msPerStep / peerAlone.msPerStep;
-      record["peer_bytes_per_body"] = peer.heapBytes / static_cast<double>(beside.bodies.size());
-      record["peer_sphere_mismatch"] = sphereMismatch(peerAlone, peer);
-      record["peer_largest_prop_move"] = largestPropMove(peer);
-      sameWork = sameWork && sphereMismatch(peerAlone, peer) < 1e-4 && largestPropMove(peer) < 1e-4;
-    }
+    // One engine's fields; true when its spheres and props ended within `tolerance` of the same work.
+    const auto engineFields = [&](const std::string& prefix, const EngineRun& alone, const EngineRun& run,
+                                  double tolerance) {
+      record[prefix + "_first_step_ms"] = run.firstStepMs;
+      record[prefix + "_alone_ms"] = alone.msPerStep;
+      record[prefix + "_over_alone"] = run.msPerStep / alone.msPerStep;
+      record[prefix + "_bytes_per_body"] = run.heapBytes / static_cast<double>(beside.bodies.size());
+      record[prefix + "_sphere_mismatch"] = sphereMismatch(alone, run);
+      record[prefix + "_largest_prop_move"] = largestPropMove(run);
+      return sphereMismatch(alone, run) <= tolerance && largestPropMove(run) <= tolerance;
+    };
+    bool sameWork = engineFields("ours", oursAlone, ours, 0.0);  // bit for bit
+    if (peer.ran) sameWork = engineFields("peer", peerAlone, peer, 1e-4) && sameWork;
     record["same_work"] = sameWork;
     sink(record);
   }

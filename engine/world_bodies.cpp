@@ -232,15 +232,18 @@ void World::restoreBody(BodyId id) {
 // A non-finite body is reported with the step it happened on, then frozen and
 // taken out of the broad phase: it cannot poison the tree or other bodies.
 void World::freezeNonFiniteBodies() {
-  std::vector<BodyId> checked = active_.ids();
+  // In id order, so faults are reported in it. Without edited bodies the
+  // active list itself (freezing a body only unflags it there).
+  std::vector<BodyId> merged;
   if (!edited_.empty()) {
-    checked.insert(checked.end(), edited_.begin(), edited_.end());
-    std::sort(checked.begin(), checked.end());
-    checked.erase(std::unique(checked.begin(), checked.end()), checked.end());
+    merged = active_.ids();
+    merged.insert(merged.end(), edited_.begin(), edited_.end());
+    std::sort(merged.begin(), merged.end());
+    merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
     for (const BodyId id : edited_) isEdited_[id] = 0;
     edited_.clear();
   }
-  for (const BodyId id : checked) {
+  for (const BodyId id : merged.empty() ? active_.ids() : merged) {
     if (frozen_[id] || bodies_[id].hasFiniteState()) continue;
     if (asleep_[id] && present_[id]) --sleepingCount_;
     frozen_[id] = true;
