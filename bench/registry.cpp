@@ -13,6 +13,7 @@ Benchmark dropBenchmark();
 Benchmark pyramidBenchmark();
 Benchmark sleepingBenchmark();
 Benchmark joltPyramidBenchmark();
+Benchmark memoryBenchmark();
 
 // Each benchmark lives in its own file and is listed here, in output order.
 std::vector<Benchmark> allBenchmarks() {
@@ -28,6 +29,7 @@ std::vector<Benchmark> allBenchmarks() {
   benchmarks.push_back(pyramidBenchmark());
   benchmarks.push_back(joltPyramidBenchmark());
   benchmarks.push_back(sleepingBenchmark());
+  benchmarks.push_back(memoryBenchmark());
 #ifdef PHYSDBG_HAVE_RENDER
   benchmarks.push_back(gpuBenchmark());
 #endif

@@ -31,10 +31,15 @@ void printRow(const nlohmann::json& record) {
           : "";
   // A row whose engines ended in different states compares different work.
   const bool differentWork = record.value("same_work", none).is_boolean() && !record["same_work"].get<bool>();
-  std::printf("%-34s %8s %7s %12s %-22s %12s %8s%s%s\n", formatNumber(record["name"]).c_str(),
+  // The memory benchmark's ratio compares peak memory, not time.
+  const std::string ratioOf = record.value("ratio_of", none).is_string()
+                                  ? "  (ratio of " + record["ratio_of"].get<std::string>() + ")"
+                                  : "";
+  std::printf("%-34s %8s %7s %12s %-22s %12s %8s%s%s%s\n", formatNumber(record["name"]).c_str(),
               formatNumber(record["n"]).c_str(), formatNumber(record.value("threads", none)).c_str(),
               formatNumber(record["ours_ms"]).c_str(), formatNumber(record["peer"]).c_str(),
               formatNumber(record["peer_ms"]).c_str(), formatNumber(record["ratio"]).c_str(), range.c_str(),
+              ratioOf.c_str(),
               differentWork ? "  NOT THE SAME WORK (same_work false)" : "");
   std::fflush(stdout);
 }
