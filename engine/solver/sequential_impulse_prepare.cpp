@@ -75,7 +75,6 @@ void SequentialImpulseSolver::buildBatchConstraints(const std::vector<RigidBody>
                                                     std::vector<ContactManifold>& manifolds, IslandWork& work,
                                                     const std::vector<std::uint32_t>& wideMembers,
                                                     const std::vector<std::size_t>& groupStarts) {
-  constexpr int slots = ContactManifold::maxPoints;
   const ConstraintSettings settings = constraintSettings();
   forEach(work.groups.size(), 8, [&](std::size_t g) {
     const std::uint32_t* members = wideMembers.data() + groupStarts[g];
@@ -90,14 +89,14 @@ void SequentialImpulseSolver::buildBatchConstraints(const std::vector<RigidBody>
     for (int lane = 0; lane < count; ++lane) {
       if (!(bouncing & (1u << lane))) continue;
       const std::uint32_t m = members[lane];
-      buildPointConstraints(frames[lane], manifolds[m], settings, &constraints_[m * slots]);
+      buildPointConstraints(frames[lane], manifolds[m], settings, pointConstraints(m));
       constrained_[m] = 1;
     }
   });
   forEach(work.singles.size(), 64, [&](std::size_t i) {
     const std::uint32_t m = work.singles[i];
     const ManifoldFrame frame = manifoldFrame(bodies, manifolds[m], m, true);
-    PointConstraint* rows = &constraints_[m * slots];
+    PointConstraint* rows = pointConstraints(m);
     buildPointConstraints(frame, manifolds[m], settings, rows);
     if (hasLinearLocks(manifolds[m]))
       for (int p = 0; p < manifolds[m].pointCount; ++p) {

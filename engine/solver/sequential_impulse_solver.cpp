@@ -570,7 +570,7 @@ void SequentialImpulseSolver::solveIsland(std::vector<RigidBody>& bodies, std::v
     measureGaps(manifolds, work);
     solve(manifolds, work, false, substep % 2 == 0, substep + 1 == substeps.count);
   }
-  for (const WideManifolds& group : work.groups) storeWideImpulses(group, manifolds, constraints_, constrained_);
+  for (const WideManifolds& group : work.groups) storeWideImpulses(group, manifolds, constraints_.data(), constraintStart_, constrained_);
   applyRestitution(bodies, manifolds, island, substeps.h, substeps.h * substeps.count);
   for (std::uint32_t id : island.bodies) bodies[id].setMotion(solverBodies_[id].motion);
 }
@@ -833,9 +833,15 @@ void SequentialImpulseSolver::prepare(const std::vector<RigidBody>& bodies, cons
                    source.isKinematic(), body.movable};
     updateCalmTime(id, dt);
   });
-  // Room for every manifold's constraints; only the batches' single and
-  // bouncing manifolds write theirs (sequential_impulse_prepare.cpp).
-  constraints_.resize(manifolds.size() * ContactManifold::maxPoints);
+  // Room for every point's constraint, manifold after manifold; only the
+  // batches' single and bouncing manifolds write theirs
+  // (sequential_impulse_prepare.cpp), so the room is not zeroed: pages no
+  // manifold writes are never touched.
+  constraintStart_.resize(manifolds.size() + 1);
+  constraintStart_[0] = 0;
+  for (std::size_t m = 0; m < manifolds.size(); ++m)
+    constraintStart_[m + 1] = constraintStart_[m] + static_cast<std::size_t>(manifolds[m].pointCount);
+  constraints_.resize(constraintStart_.back());
   constrained_.assign(manifolds.size(), 0);
   tangents_.resize(manifolds.size());
   touching_.resize(manifolds.size());
@@ -900,7 +906,7 @@ void SequentialImpulseSolver::measureGaps(const std::vector<ContactManifold>& ma
     const std::uint32_t m = work.singles[i];
     double gaps[ContactManifold::maxPoints];
     manifoldGaps(manifolds[m], gaps);
-    for (int p = 0; p < manifolds[m].pointCount; ++p) constraints_[m * ContactManifold::maxPoints + p].gap = gaps[p];
+    for (int p = 0; p < manifolds[m].pointCount; ++p) pointConstraints(m)[p].gap = gaps[p];
   });
 }
 
@@ -913,7 +919,7 @@ void SequentialImpulseSolver::warmStart(std::vector<ContactManifold>& manifolds,
 void SequentialImpulseSolver::warmStartManifold(ContactManifold& manifold, std::size_t m) {
   for (int p = 0; p < manifold.pointCount; ++p) {
     ManifoldPoint& point = manifold.points[p];
-    const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    const PointConstraint& c = pointConstraints(m)[p];
     applyNormal(manifold, c, point, point.normalImpulse);
     applyRow(manifold, c, tangents_[m][0], 1, point.tangentImpulse[0]);
     applyRow(manifold, c, tangents_[m][1], 2, point.tangentImpulse[1]);
@@ -927,7 +933,7 @@ void SequentialImpulseSolver::solveNormals(ContactManifold& manifold, std::size_
   for (int visit = 0; visit < manifold.pointCount; ++visit) {
     const int p = reversed ? manifold.pointCount - 1 - visit : visit;
     ManifoldPoint& point = manifold.points[p];
-    PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    PointConstraint& c = pointConstraints(m)[p];
     const double gap = c.gap;
     double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
     if (gap > 0.0) {
@@ -957,7 +963,7 @@ bool SequentialImpulseSolver::solveApproachTogether(ContactManifold& manifold, s
   const int count = manifold.pointCount;
   Eigen::Vector4d target = Eigen::Vector4d::Zero(), impulse = Eigen::Vector4d::Zero();
   for (int p = 0; p < count; ++p) {
-    const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    const PointConstraint& c = pointConstraints(m)[p];
     const double gap = std::max(c.gap, 0.0);
     target[p] = rowVelocity(manifold, c, manifold.normal, 0) + gap / substep;
     impulse[p] = manifold.points[p].normalImpulse;
@@ -987,7 +993,7 @@ bool SequentialImpulseSolver::solveApproachTogether(ContactManifold& manifold, s
     }
   }
   for (int p = 0; p < count; ++p) {
-    PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    PointConstraint& c = pointConstraints(m)[p];
     ManifoldPoint& point = manifold.points[p];
     const double total = std::max(point.normalImpulse + change[p], 0.0);  // a rounding-sized pull is dropped
     applyNormal(manifold, c, point, total - point.normalImpulse);
@@ -1011,7 +1017,7 @@ bool SequentialImpulseSolver::solveOverlapTogether(ContactManifold& manifold, st
   const Softness& softness = substeps.softness;
   Eigen::Vector4d error = Eigen::Vector4d::Zero(), impulse = Eigen::Vector4d::Zero();
   for (int p = 0; p < count; ++p) {
-    const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    const PointConstraint& c = pointConstraints(m)[p];
     if (c.gap > 0.0) return false;
     const double bias = useBias ? std::max(softness.biasRate * c.gap, -settings_.maxPushSpeed) : 0.0;
     error[p] = rowVelocity(manifold, c, manifold.normal, 0) + bias;
@@ -1024,7 +1030,7 @@ bool SequentialImpulseSolver::solveOverlapTogether(ContactManifold& manifold, st
   for (int p = 0; p < count; ++p)
     if (impulse[p] + change[p] < -kApproachRounding * scale) return false;
   for (int p = 0; p < count; ++p) {
-    PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    PointConstraint& c = pointConstraints(m)[p];
     ManifoldPoint& point = manifold.points[p];
     const double total = std::max(point.normalImpulse + change[p], 0.0);
     applyNormal(manifold, c, point, total - point.normalImpulse);
@@ -1119,7 +1125,7 @@ void SequentialImpulseSolver::solve(std::vector<ContactManifold>& manifolds, Isl
 
 bool SequentialImpulseSolver::reachedAny(std::size_t m, int count) const {
   for (int p = 0; p < count; ++p)
-    if (constraints_[m * ContactManifold::maxPoints + p].gap <= kReachedGap) return true;
+    if (pointConstraints(m)[p].gap <= kReachedGap) return true;
   return false;
 }
 
@@ -1127,7 +1133,7 @@ void SequentialImpulseSolver::solveFriction(ContactManifold& manifold, std::size
   for (int visit = 0; visit < manifold.pointCount; ++visit) {
     const int p = reversed ? manifold.pointCount - 1 - visit : visit;
     ManifoldPoint& point = manifold.points[p];
-    const PointConstraint& c = constraints_[m * ContactManifold::maxPoints + p];
+    const PointConstraint& c = pointConstraints(m)[p];
     double velocity[2], tangentImpulse[2];
     for (int t = 0; t < 2; ++t) {
       velocity[t] = rowVelocity(manifold, c, tangents_[m][t], t + 1);
@@ -1196,7 +1202,7 @@ double SequentialImpulseSolver::closingPull(const ContactManifold& manifold, con
 int SequentialImpulseSolver::bouncingPoints(const ContactManifold& manifold, std::size_t m,
                                             double (&gaps)[ContactManifold::maxPoints]) const {
   if (!mayBounce(manifold, m)) return 0;
-  const PointConstraint* rows = &constraints_[m * ContactManifold::maxPoints];
+  const PointConstraint* rows = pointConstraints(m);
   manifoldGaps(manifold, gaps);
   int mask = 0;
   for (int p = 0; p < manifold.pointCount; ++p)
@@ -1208,7 +1214,7 @@ int SequentialImpulseSolver::bouncingPoints(const ContactManifold& manifold, std
 // its approach was fast enough. Most manifolds fail this, and cheaply.
 bool SequentialImpulseSolver::mayBounce(const ContactManifold& manifold, std::size_t m) const {
   if (!constrained_[m]) return false;
-  const PointConstraint* rows = &constraints_[m * ContactManifold::maxPoints];
+  const PointConstraint* rows = pointConstraints(m);
   for (int p = 0; p < manifold.pointCount; ++p)
     if (rows[p].restitution != 0.0 && rows[p].largestImpulse != 0.0) return true;
   return false;
@@ -1219,7 +1225,7 @@ void SequentialImpulseSolver::bounceManifold(ContactManifold& manifold, std::siz
   double gaps[ContactManifold::maxPoints];
   const int mask = bouncingPoints(manifold, m, gaps);
   if (mask == 0) return;
-  const PointConstraint* rows = &constraints_[m * ContactManifold::maxPoints];
+  const PointConstraint* rows = pointConstraints(m);
   Eigen::Vector4d error = Eigen::Vector4d::Zero(), impulse = Eigen::Vector4d::Zero();
   for (int p = 0; p < manifold.pointCount; ++p) {
     if (!((mask >> p) & 1)) continue;

@@ -192,6 +192,9 @@ class SequentialImpulseSolver final : public ContactSolver {
   ManifoldFrame manifoldFrame(const std::vector<RigidBody>& bodies, const ContactManifold& manifold, std::size_t m,
                               bool withMotion) const;
   ConstraintSettings constraintSettings() const;
+  // Manifold m's point constraints (prepare sizes them).
+  PointConstraint* pointConstraints(std::size_t m) { return constraints_.data() + constraintStart_[m]; }
+  const PointConstraint* pointConstraints(std::size_t m) const { return constraints_.data() + constraintStart_[m]; }
   void buildNormalRows(const std::vector<RigidBody>& bodies, const ContactManifold& manifold, std::size_t m, int rows,
                        PointConstraint* out) const;
   // Either body has a translation lock: its manifolds are solved one by one,
@@ -267,7 +270,10 @@ class SequentialImpulseSolver final : public ContactSolver {
   RankedTable<std::pair<Vec3, Vec3>> impactVelocities_;  // sequentialImpacts' copy
   std::vector<char> listed_;                        // per body: in a manifold this step (prepare)
   std::vector<ManifoldTangents> tangents_;      // per manifold
-  std::vector<PointConstraint> constraints_;    // maxPoints per manifold, where constrained_
+  // Each point's, manifold m's from constraintStart_[m]; written where
+  // constrained_, else left as the allocator gave them.
+  std::vector<PointConstraint, DefaultInitialisingAllocator<PointConstraint>> constraints_;
+  std::vector<std::size_t> constraintStart_;  // per manifold, and one past the last
   std::vector<char> constrained_;               // per manifold: its constraints are in constraints_
   std::vector<double> touching_;                  // per manifold: largest separation that holds weight, m
   std::vector<char> approaching_;                 // per manifold: every point still apart at the start

@@ -9,7 +9,6 @@ namespace {
 
 using simd::Lanes;
 constexpr int lanes = simd::width;
-constexpr int slots = ContactManifold::maxPoints;
 
 using simd::getLane;
 
@@ -285,7 +284,8 @@ void solveWide(std::span<WideManifolds> groups, std::vector<SolverBody>& bodies,
 }
 
 void storeWideImpulses(const WideManifolds& group, std::vector<ContactManifold>& manifolds,
-                       std::vector<PointConstraint>& constraints, const std::vector<char>& kept) {
+                       PointConstraint* constraints, const std::vector<std::size_t>& constraintStart,
+                       const std::vector<char>& kept) {
   for (int lane = 0; lane < lanes; ++lane) {
     const std::uint32_t m = group.manifold[lane];
     if (m == WideManifolds::empty) continue;
@@ -297,7 +297,7 @@ void storeWideImpulses(const WideManifolds& group, std::vector<ContactManifold>&
       point.tangentImpulse[0] = getLane(wide.tangentImpulse[0], lane);
       point.tangentImpulse[1] = getLane(wide.tangentImpulse[1], lane);
       point.stepNormalImpulse = getLane(wide.stepNormalImpulse, lane);
-      if (kept[m]) constraints[m * slots + p].largestImpulse = getLane(wide.largestImpulse, lane);
+      if (kept[m]) constraints[constraintStart[m] + p].largestImpulse = getLane(wide.largestImpulse, lane);
     }
   }
 }

@@ -134,8 +134,10 @@ struct WideSweep {
 void solveWide(std::span<WideManifolds> groups, std::vector<SolverBody>& bodies, const WideSweep& sweep);
 
 // Impulses back to the manifolds, and each point's largest one to the
-// constraints of the manifolds that keep theirs (`kept`, per manifold).
+// constraints of the manifolds that keep theirs (`kept`, per manifold;
+// manifold m's points from constraints[constraintStart[m]]).
 void storeWideImpulses(const WideManifolds& group, std::vector<ContactManifold>& manifolds,
-                       std::vector<PointConstraint>& constraints, const std::vector<char>& kept);
+                       PointConstraint* constraints, const std::vector<std::size_t>& constraintStart,
+                       const std::vector<char>& kept);
 
 }  // namespace physdbg
