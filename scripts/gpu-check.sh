@@ -481,9 +481,12 @@ selftest() {
   cp -R "$work/packed" "$work/copy"
   rm -rf -- "${work:?}/packed"
   [ -f "$work/copy/gpu-check.sh" ] || fail "the packed folder has no gpu-check.sh"
-  local libpath
+  local libpath loaded
   libpath="$(library_path_for "$work/copy/lib")"
-  LD_LIBRARY_PATH="$libpath" ldd "$work/copy/physdbg" | grep -qF "libEGL.so.1 => $work/copy/lib/" ||
+  # Read whole before matching: grep -q stops at the first match, and under
+  # pipefail the ldd it cut off would fail the pipeline now and then.
+  loaded="$(LD_LIBRARY_PATH="$libpath" ldd "$work/copy/physdbg")" || fail "ldd cannot read the copy's physdbg"
+  grep -qF "libEGL.so.1 => $work/copy/lib/" <<<"$loaded" ||
     fail "the copy's physdbg does not load libEGL.so.1 from the copy's lib/"
 
   local out rc=0 summary
