@@ -517,7 +517,7 @@ void SequentialImpulseSolver::runBatch(std::vector<RigidBody>& bodies, const std
                                        std::vector<ContactManifold>& manifolds, IslandWork& work) {
   const std::vector<std::uint32_t> kinematic =
       work.touchesKinematic ? kinematicNeighbours(bodies, manifolds, work.island()) : std::vector<std::uint32_t>{};
-  const WideGroupPool::Loan groups(groupPool_, work.groups);
+  const WideGroupPool::Loan groups(groupPool_, work.groups, work.slots);
   planIsland(bodies, manifolds, movable, work);
   solveIsland(bodies, manifolds, work, kinematic);
   for (std::uint32_t id : work.bodies) lastSubstep_[id] = work.substeps.h;
@@ -552,6 +552,21 @@ void SequentialImpulseSolver::planIsland(const std::vector<RigidBody>& bodies, s
   groupStarts.push_back(wideMembers.size());
   work.singles.insert(work.singles.end(), work.overflow.begin(), work.overflow.end());
   work.groups.resize(groupStarts.size() - 1);
+  // Each group's slots: as many as its largest manifold has points.
+  std::size_t slotCount = 0;
+  for (std::size_t g = 0; g + 1 < groupStarts.size(); ++g) {
+    int points = 0;
+    for (std::size_t i = groupStarts[g]; i < groupStarts[g + 1]; ++i)
+      points = std::max(points, manifolds[wideMembers[i]].pointCount);
+    work.groups[g].pointSlots = points;
+    slotCount += static_cast<std::size_t>(points);
+  }
+  work.slots.resize(slotCount);
+  std::size_t first = 0;
+  for (WideManifolds& group : work.groups) {
+    attachSlots(group, work.slots, first);
+    first += static_cast<std::size_t>(group.pointSlots);
+  }
   buildBatchConstraints(bodies, manifolds, work, wideMembers, groupStarts);
 }
 

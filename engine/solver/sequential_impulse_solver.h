@@ -90,7 +90,7 @@ class SequentialImpulseSolver final : public ContactSolver {
     std::vector<std::uint32_t> scalar;
   };
   // Kept from step to step (batches_), so each batch's lists reuse their
-  // storage. Its groups are borrowed from groupPool_ while it runs.
+  // storage. Its groups and slots are borrowed from groupPool_ while it runs.
   struct IslandWork {
     std::vector<std::uint32_t> manifolds, bodies;  // its islands' together, ascending
     ContactIsland island() const { return {manifolds, bodies}; }
@@ -98,6 +98,7 @@ class SequentialImpulseSolver final : public ContactSolver {
     std::vector<ColourWork> colours;
     std::vector<std::uint32_t> overflow;
     WideGroups groups;
+    WideSlots slots;  // the groups' point slots
     std::vector<std::uint32_t> singles;  // every manifold in no group: the colours' scalar ones and the overflow
     bool touchesKinematic = false;
     double largestPenetration = 0.0;

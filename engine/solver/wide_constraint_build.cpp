@@ -247,10 +247,10 @@ unsigned buildWideManifolds(const std::uint32_t* members, int count, const std::
   for (int p = 0; p < group.pointSlots; ++p) {
     const SlotInput in = slotInput(members, count, manifolds, p);
     for (int axis = 0; axis < 3; ++axis) {
-      group.localA[p][axis] = in.localA[axis];
-      group.localB[p][axis] = in.localB[axis];
+      group.anchors[p].localA[axis] = in.localA[axis];
+      group.anchors[p].localB[axis] = in.localB[axis];
     }
-    group.present[p] = in.present;
+    group.anchors[p].present = in.present;
     const Lanes restitution =
         buildSlot(frame, in, settings, group.points[p], group.isotropic ? nullptr : &group.turns[p]);
     for (int lane = 0; lane < count; ++lane)
@@ -289,8 +289,9 @@ void measureWideGaps(WideManifolds& group, const std::vector<SolverBody>& bodies
   }
   const Lanes centres = dot(offset, normal);
   for (int p = 0; p < group.pointSlots; ++p) {
-    const Lanes gap = centres + (dot(normalInB, group.localB[p]) - dot(normalInA, group.localA[p]));
-    group.points[p].gap = simd::select(group.present[p], gap, Lanes::zero());
+    const WideAnchors& anchors = group.anchors[p];
+    const Lanes gap = centres + (dot(normalInB, anchors.localB) - dot(normalInA, anchors.localA));
+    group.points[p].gap = simd::select(anchors.present, gap, Lanes::zero());
   }
 }
 

@@ -107,7 +107,7 @@ Lanes unreachedLanes(const WideManifolds& group) {
   Lanes unreached = yes;
   for (int p = 0; p < group.pointSlots; ++p) {
     const Lanes open = simd::greater(group.points[p].gap, Lanes::all(kReachedGap));
-    unreached = simd::both(unreached, simd::select(group.present[p], open, yes));
+    unreached = simd::both(unreached, simd::select(group.anchors[p].present, open, yes));
   }
   return unreached;
 }
@@ -281,6 +281,12 @@ void warmStartWide(std::span<WideManifolds> groups, std::vector<SolverBody>& bod
 
 void solveWide(std::span<WideManifolds> groups, std::vector<SolverBody>& bodies, const WideSweep& sweep) {
   sideBySide<Sweep>(groups, bodies, sweep);
+}
+
+void attachSlots(WideManifolds& group, WideSlots& slots, std::size_t first) {
+  group.points = slots.points.data() + first;
+  group.anchors = slots.anchors.data() + first;
+  group.turns = slots.turns.data() + first;
 }
 
 void storeWideImpulses(const WideManifolds& group, std::vector<ContactManifold>& manifolds,

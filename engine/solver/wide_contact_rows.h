@@ -45,38 +45,6 @@ struct WideTurns {
   simd::Lanes turnA[3][3], turnB[3][3];  // [row][axis]
 };
 
-// No member is initialised by default: buildWideManifolds writes every
-// field a sweep reads, and a batch's groups (WideGroups) are made without
-// zeroing first (7.5 KB a group, 7% of a box pile's instructions).
-//
-// The sweeps stream a large island's groups from memory (a 100-row pyramid
-// has 28 MB of them), so what they read comes first and in one piece (4.3 of
-// a group's 7.5 KB). The rest follows: the anchors, read once per substep to
-// measure gaps, and the turns, which bodies with isotropic inertia (spheres,
-// cubes) do without.
-struct WideManifolds {
-  static constexpr std::uint32_t empty = ~0u;
-  // bodyA, bodyB: the bodies' ranks (body_ranks.h), where the kernels find
-  // them in the solver's dense table. `empty` in unused lanes.
-  std::array<std::uint32_t, simd::width> manifold, bodyA, bodyB;
-  std::array<bool, simd::width> writableA, writableB;             // a movable body in the lane
-  // Every lane's inverse inertia, on both sides, is spinScale times the
-  // identity with no rotation locked: a turn is the cross times that scale
-  // (zero for an immovable body), and `turns` is left unwritten.
-  bool isotropic;
-  // The most points any lane has: slots past it are empty in every lane, so
-  // a group of sphere contacts (one point each) solves one slot, not four.
-  int pointSlots;
-  simd::Lanes direction[3][3];  // [row][axis]: the normal, then the two tangents
-  simd::Lanes inverseMassA, inverseMassB;  // as scaled for the contact
-  simd::Lanes spinScaleA, spinScaleB;      // as scaled for the contact; 0 unless isotropic
-  std::array<WidePoint, ContactManifold::maxPoints> points;
-  // Each point's anchors in its bodies' frames, for the gaps.
-  simd::Lanes localA[ContactManifold::maxPoints][3], localB[ContactManifold::maxPoints][3];
-  simd::Lanes present[ContactManifold::maxPoints];  // mask: the lane's manifold has this point
-  std::array<WideTurns, ContactManifold::maxPoints> turns;  // unless isotropic
-};
-
 // Makes elements default-initialised, where std::allocator value-initialises
 // (zeroes) them: for a vector whose elements are written before they are read.
 template <class T>
@@ -97,6 +65,69 @@ struct DefaultInitialisingAllocator : std::allocator<T> {
     ::new (static_cast<void*>(place)) U(std::forward<Arguments>(arguments)...);
   }
 };
+template <class T>
+using DefaultInitialisedVector = std::vector<T, DefaultInitialisingAllocator<T>>;
+
+// Each point's anchors in its bodies' frames, for the gaps, and which lanes
+// have the point.
+struct WideAnchors {
+  simd::Lanes localA[3], localB[3];
+  simd::Lanes present;  // mask: the lane's manifold has this point
+};
+
+// The point slots of a batch's groups, group after group, each group taking
+// as many as its lanes' largest manifold has points (a group of sphere
+// contacts one, a box pile's four): fixed at four a group, a sphere pile's
+// groups held three empty slots each, 1.3 KB a contact. Nothing is zeroed:
+// buildWideManifolds writes every slot a sweep reads, and the turns of
+// isotropic groups are never written, so their pages are never touched.
+struct WideSlots {
+  DefaultInitialisedVector<WidePoint> points;
+  DefaultInitialisedVector<WideAnchors> anchors;
+  DefaultInitialisedVector<WideTurns> turns;  // written only for groups that are not isotropic
+  void resize(std::size_t count) {
+    points.resize(count);
+    anchors.resize(count);
+    turns.resize(count);
+  }
+};
+
+// No member is initialised by default: buildWideManifolds writes every
+// field a sweep reads, and a batch's groups (WideGroups) are made without
+// zeroing first.
+//
+// The sweeps stream a large island's groups from memory, so what they read
+// comes first: the header here, then the group's point slots (WideSlots).
+// The anchors are read once per substep to measure gaps; the turns only by
+// groups whose bodies' inertia is not isotropic (spheres and cubes do
+// without).
+struct WideManifolds {
+  static constexpr std::uint32_t empty = ~0u;
+  // bodyA, bodyB: the bodies' ranks (body_ranks.h), where the kernels find
+  // them in the solver's dense table. `empty` in unused lanes.
+  std::array<std::uint32_t, simd::width> manifold, bodyA, bodyB;
+  std::array<bool, simd::width> writableA, writableB;             // a movable body in the lane
+  // Every lane's inverse inertia, on both sides, is spinScale times the
+  // identity with no rotation locked: a turn is the cross times that scale
+  // (zero for an immovable body), and `turns` is left unwritten.
+  bool isotropic;
+  // The most points any lane has: slots past it are empty in every lane, so
+  // a group of sphere contacts (one point each) solves one slot, not four.
+  int pointSlots;
+  simd::Lanes direction[3][3];  // [row][axis]: the normal, then the two tangents
+  simd::Lanes inverseMassA, inverseMassB;  // as scaled for the contact
+  simd::Lanes spinScaleA, spinScaleB;      // as scaled for the contact; 0 unless isotropic
+  // [0, pointSlots) of each, in the batch's WideSlots (attachSlots).
+  WidePoint* points;
+  WideAnchors* anchors;
+  WideTurns* turns;  // unless isotropic
+};
+
+// Points `group` at the slots of `slots` from `first`, which the caller has
+// sized to hold as many as the group will use (its pointSlots, at most
+// ContactManifold::maxPoints). The pointers hold until `slots` is resized.
+void attachSlots(WideManifolds& group, WideSlots& slots, std::size_t first);
+
 using WideGroups = std::vector<WideManifolds, DefaultInitialisingAllocator<WideManifolds>>;
 
 // Up to simd::width manifolds (indices into `manifolds`, sharing no movable

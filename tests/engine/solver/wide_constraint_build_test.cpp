@@ -121,6 +121,18 @@ void expectSame(double expected, const Lanes& lanes, int lane, const char* field
       << field << ", lane " << lane << ", point " << p << ": " << expected << " vs " << actual;
 }
 
+// A group with room for every point slot (WideSlots).
+struct SlottedGroup {
+  WideSlots slots;
+  WideManifolds group;
+  SlottedGroup() {
+    slots.resize(ContactManifold::maxPoints);
+    attachSlots(group, slots, 0);
+  }
+  SlottedGroup(const SlottedGroup&) = delete;
+  SlottedGroup& operator=(const SlottedGroup&) = delete;
+};
+
 TEST(WideConstraintBuild, LanesHoldTheScalarConstraintsBitForBit) {
   std::mt19937 random(17);
   const ConstraintSettings settings{0.005, 0.02, 0.2};
@@ -130,7 +142,8 @@ TEST(WideConstraintBuild, LanesHoldTheScalarConstraintsBitForBit) {
     const Case input = randomCase(random, count, isotropic);
     std::vector<std::uint32_t> members(count);
     for (int lane = 0; lane < count; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
-    WideManifolds group;
+    SlottedGroup slotted;
+    WideManifolds& group = slotted.group;
     const unsigned bouncing =
         buildWideManifolds(members.data(), count, input.manifolds, input.frames.data(), input.bodies, identityRanks(input.bodies), settings, group);
     int mostPoints = 0;
@@ -197,29 +210,29 @@ TEST(WideConstraintBuild, IsotropicOnlyWhenEveryLaneTurnsByAScale) {
   const auto build = [&](const Case& input) {
     std::vector<std::uint32_t> members(simd::width);
     for (int lane = 0; lane < simd::width; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
-    WideManifolds group;
+    SlottedGroup slotted;
     buildWideManifolds(members.data(), simd::width, input.manifolds, input.frames.data(), input.bodies, identityRanks(input.bodies), settings,
-                       group);
-    return group;
+                       slotted.group);
+    return slotted.group.isotropic;
   };
   for (int trial = 0; trial < 20; ++trial) {
     Case input = randomCase(random, simd::width, true);
-    EXPECT_TRUE(build(input).isotropic);
+    EXPECT_TRUE(build(input));
     const int lane = trial % simd::width;
     Case locked = input;
     locked.frames[lane].angularMaskB[trial % 3] = 0.0;
-    EXPECT_FALSE(build(locked).isotropic);
+    EXPECT_FALSE(build(locked));
     Case turned = input;
     turned.frames[lane].inverseInertiaA = randomInverseInertia(random);
-    EXPECT_FALSE(build(turned).isotropic);
+    EXPECT_FALSE(build(turned));
     Case stretched = input;
     stretched.frames[lane].inverseInertiaA(2, 2) *= 1.5;
-    EXPECT_FALSE(build(stretched).isotropic);
+    EXPECT_FALSE(build(stretched));
     // -0 off the diagonal is the same matrix, but its product's zeros could
     // take its sign: only +0 counts.
     Case negativeZero = input;
     negativeZero.frames[lane].inverseInertiaA(0, 1) = -0.0;
-    EXPECT_FALSE(build(negativeZero).isotropic);
+    EXPECT_FALSE(build(negativeZero));
   }
 }
 
@@ -242,6 +255,11 @@ TEST(WideContactRows, IsotropicGroupsSolveAsStoredTurnsWould) {
     std::vector<std::uint32_t> members(simd::width);
     for (int lane = 0; lane < simd::width; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
     WideGroups scaled(1), turned(1);
+    WideSlots scaledSlots, turnedSlots;
+    scaledSlots.resize(ContactManifold::maxPoints);
+    turnedSlots.resize(ContactManifold::maxPoints);
+    attachSlots(scaled[0], scaledSlots, 0);
+    attachSlots(turned[0], turnedSlots, 0);
     buildWideManifolds(members.data(), simd::width, input.manifolds, input.frames.data(), input.bodies, identityRanks(input.bodies), settings,
                        scaled[0]);
     buildWideManifolds(members.data(), simd::width, stored.manifolds, stored.frames.data(), stored.bodies, identityRanks(stored.bodies), settings,
@@ -293,7 +311,8 @@ TEST(WideConstraintBuild, LaneGapsMatchTheScalarGapsBitForBit) {
     }
     std::vector<std::uint32_t> members(count);
     for (int lane = 0; lane < count; ++lane) members[lane] = static_cast<std::uint32_t>(lane);
-    WideManifolds group;
+    SlottedGroup slotted;
+    WideManifolds& group = slotted.group;
     buildWideManifolds(members.data(), count, input.manifolds, input.frames.data(), input.bodies, identityRanks(input.bodies), settings, group);
     measureWideGaps(group, input.bodies);
     for (int lane = 0; lane < count; ++lane) {
@@ -342,8 +361,12 @@ TEST(WideContactRows, GroupsSolvedSideBySideEndAsTheyWouldAlone) {
       const int group = static_cast<int>(id / 2) / simd::width;
       if (group == locked && id % 2 == 0) body.linearMask = Vec3(1.0, 0.0, 1.0);
     }
+    constexpr int slotsEach = ContactManifold::maxPoints;
     WideGroups groups(groupCount);
+    WideSlots slots;
+    slots.resize(groupCount * slotsEach);
     for (int g = 0; g < groupCount; ++g) {
+      attachSlots(groups[g], slots, g * slotsEach);
       const int count = g == groupCount - 1 ? std::max(1, simd::width - 1) : simd::width;
       std::vector<std::uint32_t> members(count);
       for (int lane = 0; lane < count; ++lane) members[lane] = static_cast<std::uint32_t>(g * simd::width + lane);
@@ -352,6 +375,8 @@ TEST(WideContactRows, GroupsSolvedSideBySideEndAsTheyWouldAlone) {
       for (int p = 0; p < groups[g].pointSlots; ++p) groups[g].points[p].gap = Lanes::all(0.01 * (p - 1));
     }
     WideGroups alone = groups;
+    WideSlots slotsAlone = slots;
+    for (int g = 0; g < groupCount; ++g) attachSlots(alone[g], slotsAlone, g * slotsEach);
     std::vector<SolverBody> bodiesAlone = input.bodies;
     const auto sweep = [&](std::span<WideManifolds> these, std::vector<SolverBody>& bodies, bool reversed) {
       warmStartWide(these, bodies);

@@ -11,15 +11,16 @@ namespace {
 TEST(WideGroupPool, TheStorageReturnedLastIsLentFirst) {
   WideGroupPool pool;
   WideGroups first, second;
+  WideSlots firstSlots, secondSlots;
   const WideManifolds* used = nullptr;
   {
-    const WideGroupPool::Loan loan(pool, first);
+    const WideGroupPool::Loan loan(pool, first, firstSlots);
     first.resize(40);
     used = first.data();
   }
   EXPECT_TRUE(first.empty());
   {
-    const WideGroupPool::Loan loan(pool, second);
+    const WideGroupPool::Loan loan(pool, second, secondSlots);
     EXPECT_EQ(second.data(), used);  // the same storage, still large enough
     EXPECT_GE(second.capacity(), 40u);
     second.resize(10);
@@ -30,12 +31,13 @@ TEST(WideGroupPool, TheStorageReturnedLastIsLentFirst) {
 TEST(WideGroupPool, LoansHeldAtOnceNeverShareStorage) {
   WideGroupPool pool;
   WideGroups a, b, c;
+  WideSlots slotsA, slotsB, slotsC;
   {
-    const WideGroupPool::Loan one(pool, a), two(pool, b);
+    const WideGroupPool::Loan one(pool, a, slotsA), two(pool, b, slotsB);
     a.resize(8);
     b.resize(8);
   }
-  const WideGroupPool::Loan one(pool, a), two(pool, b), three(pool, c);
+  const WideGroupPool::Loan one(pool, a, slotsA), two(pool, b, slotsB), three(pool, c, slotsC);
   a.resize(8);
   b.resize(8);
   c.resize(8);
