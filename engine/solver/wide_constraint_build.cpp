@@ -19,11 +19,7 @@ namespace {
 using simd::Lanes;
 constexpr int lanes = simd::width;
 
-void cross(const Lanes* a, const Lanes* b, Lanes* out) {
-  out[0] = a[1] * b[2] - a[2] * b[1];
-  out[1] = a[2] * b[0] - a[0] * b[2];
-  out[2] = a[0] * b[1] - a[1] * b[0];
-}
+void cross(const Lanes* a, const Lanes* b, Lanes* out) { crossLanes(a, b, out); }
 
 Lanes dot(const Lanes* a, const Lanes* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
@@ -190,14 +186,16 @@ Lanes buildSlot(const FrameLanes& frame, const SlotInput& in, const ConstraintSe
   const Lanes slidingSpeed = simd::sqrt(dot(sliding, sliding));
   out.friction = keep(simd::select(simd::greater(Lanes::all(settings.stickingSpeed), slidingSpeed),
                                    frame.staticFriction, frame.dynamicFriction));
-  for (int row = 0; row < 3; ++row)
-    for (int axis = 0; axis < 3; ++axis) {
-      out.crossA[row][axis] = keep(crossA[row][axis]);
-      out.crossB[row][axis] = keep(crossB[row][axis]);
-      if (turns == nullptr) continue;
-      turns->turnA[row][axis] = keep(turnA[row][axis]);
-      turns->turnB[row][axis] = keep(turnB[row][axis]);
-    }
+  for (int axis = 0; axis < 3; ++axis) {
+    out.armA[axis] = keep(armA[axis]);
+    out.armB[axis] = keep(armB[axis]);
+  }
+  if (turns != nullptr)
+    for (int row = 0; row < 3; ++row)
+      for (int axis = 0; axis < 3; ++axis) {
+        turns->turnA[row][axis] = keep(turnA[row][axis]);
+        turns->turnB[row][axis] = keep(turnB[row][axis]);
+      }
   out.gap = zero;
   out.largestImpulse = zero;
   out.normalImpulse = in.normalImpulse;

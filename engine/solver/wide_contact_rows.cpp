@@ -62,11 +62,10 @@ const double* velocities(const BodyMotion& motion) {
 
 // The relative velocity along a row, as the scalar solver's rowVelocity.
 [[gnu::always_inline]] inline Lanes rowVelocity(const LaneVelocities& a, const LaneVelocities& b,
-                                                const WideManifolds& group, const WidePoint& point, int row) {
+                                                const WideManifolds& group, const RowCrosses& crosses, int row) {
   Lanes difference[3];
   for (int axis = 0; axis < 3; ++axis) difference[axis] = b.linear()[axis] - a.linear()[axis];
-  return dot(difference, group.direction[row]) + dot(b.angular(), point.crossB[row]) -
-         dot(a.angular(), point.crossA[row]);
+  return dot(difference, group.direction[row]) + dot(b.angular(), crosses.b) - dot(a.angular(), crosses.a);
 }
 
 // How a group is solved: `isotropic`, its turns are its crosses times a
@@ -80,13 +79,12 @@ struct Kind {
 
 template <class K>
 [[gnu::always_inline]] inline void applyRow(LaneVelocities& a, LaneVelocities& b, const WideManifolds& group, int slot,
-                                            int row, Lanes impulse) {
-  const WidePoint& point = group.points[slot];
+                                            int row, const RowCrosses& crosses, Lanes impulse) {
   const Lanes linearA = group.inverseMassA * impulse, linearB = group.inverseMassB * impulse;
   for (int axis = 0; axis < 3; ++axis) {
     const Lanes direction = group.direction[row][axis];
-    const Lanes turnA = K::isotropic ? point.crossA[row][axis] * group.spinScaleA : group.turns[slot].turnA[row][axis];
-    const Lanes turnB = K::isotropic ? point.crossB[row][axis] * group.spinScaleB : group.turns[slot].turnB[row][axis];
+    const Lanes turnA = K::isotropic ? crosses.a[axis] * group.spinScaleA : group.turns[slot].turnA[row][axis];
+    const Lanes turnB = K::isotropic ? crosses.b[axis] * group.spinScaleB : group.turns[slot].turnB[row][axis];
     a.v[axis] -= linearA * direction;
     a.v[3 + axis] -= impulse * turnA;
     b.v[axis] += linearB * direction;
@@ -96,8 +94,8 @@ template <class K>
 
 template <class K>
 [[gnu::always_inline]] inline void applyNormal(LaneVelocities& a, LaneVelocities& b, WideManifolds& group, int slot,
-                                               Lanes impulse) {
-  applyRow<K>(a, b, group, slot, 0, impulse);
+                                               const RowCrosses& crosses, Lanes impulse) {
+  applyRow<K>(a, b, group, slot, 0, crosses, impulse);
   group.points[slot].stepNormalImpulse += impulse;
 }
 
@@ -128,11 +126,12 @@ template <class K>
     massScale = simd::select(apart, one, Lanes::all(softness.massScale));
     impulseScale = simd::select(apart, zero, Lanes::all(softness.impulseScale));
   }
-  const Lanes normalVelocity = rowVelocity(a, b, group, point, 0);
+  const RowCrosses crosses = rowCrosses(point, group.direction[0]);
+  const Lanes normalVelocity = rowVelocity(a, b, group, crosses, 0);
   Lanes impulse = -point.normalMass * massScale * (normalVelocity + bias) - impulseScale * point.normalImpulse;
   if (leave) impulse = simd::select(*leave, zero, impulse);
   const Lanes total = simd::max(point.normalImpulse + impulse, zero);
-  applyNormal<K>(a, b, group, slot, total - point.normalImpulse);
+  applyNormal<K>(a, b, group, slot, crosses, total - point.normalImpulse);
   point.normalImpulse = total;
   point.largestImpulse = simd::max(point.largestImpulse, total);
 }
@@ -141,8 +140,10 @@ template <class K>
 [[gnu::always_inline]] inline void solveFriction(LaneVelocities& a, LaneVelocities& b, WideManifolds& group, int slot) {
   WidePoint& point = group.points[slot];
   Lanes velocity[2], tangent[2];
+  RowCrosses crosses[2];
   for (int t = 0; t < 2; ++t) {
-    velocity[t] = rowVelocity(a, b, group, point, t + 1);
+    crosses[t] = rowCrosses(point, group.direction[t + 1]);
+    velocity[t] = rowVelocity(a, b, group, crosses[t], t + 1);
     tangent[t] = point.tangentImpulse[t] - point.tangentMass[t] * velocity[t];
   }
   const Lanes limit = point.friction * point.normalImpulse;
@@ -162,8 +163,8 @@ template <class K>
     for (int t = 0; t < 2; ++t)
       tangent[t] = simd::select(clamp, simd::select(sliding, velocity[t] * along, tangent[t] * scale), tangent[t]);
   }
-  applyRow<K>(a, b, group, slot, 1, tangent[0] - point.tangentImpulse[0]);
-  applyRow<K>(a, b, group, slot, 2, tangent[1] - point.tangentImpulse[1]);
+  applyRow<K>(a, b, group, slot, 1, crosses[0], tangent[0] - point.tangentImpulse[0]);
+  applyRow<K>(a, b, group, slot, 2, crosses[1], tangent[1] - point.tangentImpulse[1]);
   point.tangentImpulse[0] = tangent[0];
   point.tangentImpulse[1] = tangent[1];
 }
@@ -187,9 +188,10 @@ void warmStartGroups(WideManifolds* const* groups, std::vector<SolverBody>& bodi
   for (int p = 0; p < groups[0]->pointSlots; ++p)
     for (int g = 0; g < count; ++g) {
       const WidePoint& point = groups[g]->points[p];
-      applyNormal<K>(a[g], b[g], *groups[g], p, point.normalImpulse);
-      applyRow<K>(a[g], b[g], *groups[g], p, 1, point.tangentImpulse[0]);
-      applyRow<K>(a[g], b[g], *groups[g], p, 2, point.tangentImpulse[1]);
+      const WideManifolds& group = *groups[g];
+      applyNormal<K>(a[g], b[g], *groups[g], p, rowCrosses(point, group.direction[0]), point.normalImpulse);
+      applyRow<K>(a[g], b[g], group, p, 1, rowCrosses(point, group.direction[1]), point.tangentImpulse[0]);
+      applyRow<K>(a[g], b[g], group, p, 2, rowCrosses(point, group.direction[2]), point.tangentImpulse[1]);
     }
   for (int g = 0; g < count; ++g) {
     scatter(a[g], groups[g]->bodyA, groups[g]->writableA, bodies);

@@ -32,7 +32,9 @@ TEST(JoltPyramidScene, TheShippedFileIsTheBenchmarkScene) {
     ASSERT_EQ(a.collider->kind(), ColliderKind::Box);
     ASSERT_EQ(b.collider->kind(), ColliderKind::Box);
     EXPECT_EQ(halfExtents(a), halfExtents(b));
-    if (!a.isStatic) EXPECT_EQ(a.mass, b.mass);
+    if (!a.isStatic) {
+      EXPECT_EQ(a.mass, b.mass);
+    }
     EXPECT_EQ(a.material.staticFriction, b.material.staticFriction);
     EXPECT_EQ(a.material.dynamicFriction, b.material.dynamicFriction);
     EXPECT_EQ(a.material.restitution, b.material.restitution);

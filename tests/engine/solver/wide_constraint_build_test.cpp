@@ -163,10 +163,16 @@ TEST(WideConstraintBuild, LanesHoldTheScalarConstraintsBitForBit) {
         expectSame(c.friction, wide.friction, lane, "friction", p);
         expectSame(manifold.points[p].normalImpulse, wide.normalImpulse, lane, "normalImpulse", p);
         expectSame(manifold.points[p].tangentImpulse[1], wide.tangentImpulse[1], lane, "tangentImpulse[1]", p);
+        for (int axis = 0; axis < 3; ++axis) {
+          expectSame(c.armA[axis], wide.armA[axis], lane, "armA", p);
+          expectSame(c.armB[axis], wide.armB[axis], lane, "armB", p);
+        }
         for (int row = 0; row < 3; ++row)
           for (int axis = 0; axis < 3; ++axis) {
-            expectSame(c.crossA[row][axis], wide.crossA[row][axis], lane, "crossA", p);
-            expectSame(c.crossB[row][axis], wide.crossB[row][axis], lane, "crossB", p);
+            // The sweeps' crosses, taken from the arms.
+            const RowCrosses crosses = rowCrosses(wide, group.direction[row]);
+            expectSame(c.crossA[row][axis], crosses.a[axis], lane, "crossA", p);
+            expectSame(c.crossB[row][axis], crosses.b[axis], lane, "crossB", p);
             if (!group.isotropic) {
               expectSame(c.turnA[row][axis], group.turns[p].turnA[row][axis], lane, "turnA", p);
               expectSame(c.turnB[row][axis], group.turns[p].turnB[row][axis], lane, "turnB", p);
@@ -174,8 +180,8 @@ TEST(WideConstraintBuild, LanesHoldTheScalarConstraintsBitForBit) {
             }
             // The solve's turn: the cross times the lane's scale, the same
             // number (a zero's sign aside, which no sum keeps).
-            const double turnA = simd::getLane(wide.crossA[row][axis] * group.spinScaleA, lane);
-            const double turnB = simd::getLane(wide.crossB[row][axis] * group.spinScaleB, lane);
+            const double turnA = simd::getLane(crosses.a[axis] * group.spinScaleA, lane);
+            const double turnB = simd::getLane(crosses.b[axis] * group.spinScaleB, lane);
             EXPECT_EQ(c.turnA[row][axis], turnA) << "isotropic turnA, lane " << lane << ", point " << p;
             EXPECT_EQ(c.turnB[row][axis], turnB) << "isotropic turnB, lane " << lane << ", point " << p;
           }
@@ -186,7 +192,7 @@ TEST(WideConstraintBuild, LanesHoldTheScalarConstraintsBitForBit) {
       for (int p = manifold.pointCount; p < mostPoints; ++p) {
         expectSame(0.0, group.points[p].normalMass, lane, "empty normalMass", p);
         if (!group.isotropic) expectSame(0.0, group.turns[p].turnA[1][2], lane, "empty turnA", p);
-        expectSame(0.0, group.points[p].crossA[1][2], lane, "empty crossA", p);
+        expectSame(0.0, group.points[p].armA[2], lane, "empty armA", p);
         expectSame(0.0, group.points[p].normalImpulse, lane, "empty normalImpulse", p);
       }
     }
