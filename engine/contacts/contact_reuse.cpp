@@ -6,13 +6,6 @@
 namespace physdbg {
 namespace {
 
-// Both within the tolerance: |q . q0| >= cos(angle / 2) is the rotation
-// between them being at most `angle`.
-bool near(const Transform& now, const Transform& then, const ContactReuseTolerance& tolerance) {
-  if ((now.position - then.position).squaredNorm() > tolerance.distance * tolerance.distance) return false;
-  return std::abs(now.rotation.coeffs().dot(then.rotation.coeffs())) >= std::cos(0.5 * tolerance.angle);
-}
-
 // A point fixed to a body that moved from `then` to `now`.
 Vec3 carried(const Vec3& point, const Transform& then, const Transform& now) {
   return now.apply(then.applyInverse(point));
@@ -26,11 +19,6 @@ Vec3 carriedNormal(const Vec3& normal, const Transform& then, const Transform& n
 }  // namespace
 
 bool worthReusing(const ContactResult& result) { return result.usedBoxBox || result.usedGeneralPath; }
-
-bool stillHolds(const ReusableContact& kept, const Transform& a, const Transform& b,
-                const ContactReuseTolerance& tolerance) {
-  return near(a, kept.a, tolerance) && near(b, kept.b, tolerance);
-}
 
 bool carryResult(const ReusableContact& kept, const Transform& a, const Transform& b, ContactResult& result) {
   result = kept.result;

@@ -8,6 +8,7 @@
 // every distance is measured anew at the current poses. Only the box-box and
 // GJK/EPA answers are kept: the analytic ones (spheres) cost less than the
 // check.
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -38,10 +39,21 @@ struct ReusableContact {
 // Whether an answer of this kind is worth keeping (box-box or GJK/EPA).
 bool worthReusing(const ContactResult& result);
 
+// Whether a pose is within `tolerance` of another: |q . q0| >= cos(angle / 2)
+// is the rotation between them being at most `angle`. Inline, so that with
+// a constant tolerance the compiler takes the cosine once, at compile time
+// (it was two calls to cos a pair, on every pair a resting pile tests).
+inline bool nearPose(const Transform& now, const Transform& then, const ContactReuseTolerance& tolerance) {
+  if ((now.position - then.position).squaredNorm() > tolerance.distance * tolerance.distance) return false;
+  return std::abs(now.rotation.coeffs().dot(then.rotation.coeffs())) >= std::cos(0.5 * tolerance.angle);
+}
+
 // Whether both bodies are still within `tolerance` of the poses the answer
 // was computed at.
-bool stillHolds(const ReusableContact& kept, const Transform& a, const Transform& b,
-                const ContactReuseTolerance& tolerance);
+inline bool stillHolds(const ReusableContact& kept, const Transform& a, const Transform& b,
+                       const ContactReuseTolerance& tolerance) {
+  return nearPose(a, kept.a, tolerance) && nearPose(b, kept.b, tolerance);
+}
 
 // The kept answer at the current poses: false when its distance changed sign
 // (a separated pair now touching, a penetrating one now apart), which only a
