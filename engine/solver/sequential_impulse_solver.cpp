@@ -222,7 +222,7 @@ double SequentialImpulseSolver::reachShare(const BodyReach& body, const StepCont
 }
 
 void SequentialImpulseSolver::beginStep(std::vector<RigidBody>&, const MovableBodies&, const StepContext&) {
-  std::swap(previousManifolds_, manifolds_);
+  previousImpulses_.remember(manifolds_);
   retireManifolds();
 }
 
@@ -261,72 +261,11 @@ double allowedOverlap(const SolverSettings& settings, double size) {
   return std::min(settings.restingOverlap, settings.relativeRestingOverlap * size);
 }
 
-void copyImpulses(const ManifoldPoint& from, ManifoldPoint& to) {
-  to.normalImpulse = from.normalImpulse;
-  to.tangentImpulse[0] = from.tangentImpulse[0];
-  to.tangentImpulse[1] = from.tangentImpulse[1];
-}
-
-// Feature ids first; then each point left over takes the nearest unused old
-// point within `reach`. Each old point is carried at most once.
-void carryImpulses(const ContactManifold& old, ContactManifold& manifold, double reach) {
-  bool used[ContactManifold::maxPoints] = {}, carried[ContactManifold::maxPoints] = {};
-  for (int p = 0; p < manifold.pointCount; ++p)
-    for (int q = 0; q < old.pointCount; ++q) {
-      if (used[q] || old.points[q].featureId != manifold.points[p].featureId) continue;
-      copyImpulses(old.points[q], manifold.points[p]);
-      used[q] = carried[p] = true;
-      break;
-    }
-  for (int p = 0; p < manifold.pointCount; ++p) {
-    if (carried[p]) continue;
-    int nearest = -1;
-    double best = reach * reach;
-    for (int q = 0; q < old.pointCount; ++q) {
-      const double distance = (old.points[q].localA - manifold.points[p].localA).squaredNorm();
-      if (!used[q] && distance <= best) {
-        best = distance;
-        nearest = q;
-      }
-    }
-    if (nearest < 0) continue;
-    copyImpulses(old.points[nearest], manifold.points[p]);
-    used[nearest] = true;
-  }
-}
-
 }  // namespace
 
-// Impulses of points that persist (same pair, same feature id) carry over.
-// A point whose features changed takes the impulse of the nearest old point
-// left unmatched within linearSlop in A's frame: where two equal faces meet
-// edge to edge, a sway of a micrometre moves a corner across the other face's
-// side and the clip makes a new point in the same place. Losing its impulse
-// would drop the load it held for a step and kick the stack.
-//
-// Both lists are in pair order, so a range of manifolds walks the old list
-// from the first old manifold not before its own first pair: ranges run in
-// parallel, and each manifold meets the same old one for any split.
+// The last step's impulses, matched by pair and point (warm_start_memory.h).
 void SequentialImpulseSolver::warmStartFromPreviousStep(const StepContext& step) {
-  const auto pairOf = [](const ContactManifold& manifold) { return BodyPair{manifold.a, manifold.b}; };
-  const auto carryRange = [&](std::size_t begin, std::size_t end) {
-    auto old = std::lower_bound(
-        previousManifolds_.begin(), previousManifolds_.end(), pairOf(manifolds_[begin]),
-        [&pairOf](const ContactManifold& manifold, const BodyPair& pair) { return pairOf(manifold) < pair; });
-    for (std::size_t m = begin; m < end; ++m) {
-      ContactManifold& manifold = manifolds_[m];
-      const BodyPair pair = pairOf(manifold);
-      while (old != previousManifolds_.end() && pairOf(*old) < pair) ++old;
-      if (old == previousManifolds_.end()) return;
-      if (pairOf(*old) == pair) carryImpulses(*old, manifold, settings_.linearSlop);
-    }
-  };
-  constexpr std::size_t grain = 1024;  // a carry is a few cache lines
-  if (manifolds_.empty()) return;
-  if (step.tasks)
-    step.tasks->parallelFor(manifolds_.size(), grain, carryRange);
-  else
-    carryRange(0, manifolds_.size());
+  previousImpulses_.carryInto(manifolds_, settings_.linearSlop, step.tasks);
 }
 
 namespace {
