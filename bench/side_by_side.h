@@ -24,7 +24,7 @@ struct EngineRun {
   // process do not hide behind memory an earlier run freed.
   double heapBytes = 0.0;
   double firstStepMs = 0.0;  // with warm-up: the step taken before the timed ones
-  int contacts = 0;          // touching pairs after the last step
+  int contacts = 0;          // touching pairs after the last step, asleep ones included
 };
 
 // Whether two runs of one scene did the same work: each engine's final

@@ -247,4 +247,6 @@ void World::applyLifetimes(int state) {
     if (lifetime.addAtStep == state) restoreBody(lifetime.body);
 }
 
+std::size_t World::touchingPairCount() const { return events_.touchingPairs().size(); }
+
 }  // namespace physdbg

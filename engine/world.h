@@ -120,6 +120,9 @@ class World {
   const std::vector<NumericalFault>& numericalFaults() const { return faults_; }
   const StepStats& lastStepStats() const { return stats_; }
   const std::vector<Contact>& contacts() const { return contactPass_.contacts(); }
+  // Pairs touching after the last step, asleep ones included: the pairs
+  // contact events hold as begun and not ended. contacts() has the awake ones.
+  std::size_t touchingPairCount() const;
   // Sequential-impulse solver only: this step's manifolds, speculative points included.
   const std::vector<ContactManifold>& manifolds() const { return solver_->manifolds(); }
   const std::vector<BodyPair>& candidatePairs() const { return pairs_; }
