@@ -25,9 +25,6 @@ constexpr std::uint32_t immovable = ~0u;
 ConstraintColouring colourConstraints(const std::vector<ContactManifold>& all,
                                       const std::vector<std::uint32_t>& manifolds, const std::vector<bool>& movable,
                                       int colourLimit) {
-  colourLimit = std::clamp(colourLimit, 0, ConstraintColouring::maxColours);
-  // Movable bodies numbered by their rank among the island's movable bodies:
-  // a sorted list and a binary search, no hashing (this runs every step).
   std::vector<std::uint32_t> bodies;
   bodies.reserve(2 * manifolds.size());
   for (std::uint32_t m : manifolds)
@@ -35,6 +32,15 @@ ConstraintColouring colourConstraints(const std::vector<ContactManifold>& all,
       if (movable[body]) bodies.push_back(body);
   std::sort(bodies.begin(), bodies.end());
   bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
+  return colourConstraints(all, manifolds, movable, bodies, colourLimit);
+}
+
+ConstraintColouring colourConstraints(const std::vector<ContactManifold>& all,
+                                      const std::vector<std::uint32_t>& manifolds, const std::vector<bool>& movable,
+                                      std::span<const std::uint32_t> bodies, int colourLimit) {
+  colourLimit = std::clamp(colourLimit, 0, ConstraintColouring::maxColours);
+  // Movable bodies numbered by their rank among the island's movable bodies:
+  // a sorted list and a binary search, no hashing (this runs every step).
   const auto local = [&](std::uint32_t body) {
     if (!movable[body]) return immovable;
     return static_cast<std::uint32_t>(std::lower_bound(bodies.begin(), bodies.end(), body) - bodies.begin());

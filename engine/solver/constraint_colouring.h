@@ -12,6 +12,7 @@
 // colours) goes to the overflow, solved one by one after the colours. The
 // result depends only on the manifold order, never on threads.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "engine/contacts/contact_manifold.h"
@@ -30,6 +31,14 @@ struct ConstraintColouring {
 // `movable[i]` false: body i is immovable this step and shared freely.
 ConstraintColouring colourConstraints(const std::vector<ContactManifold>& all,
                                       const std::vector<std::uint32_t>& manifolds, const std::vector<bool>& movable,
+                                      int colourLimit = ConstraintColouring::maxColours);
+// The same, given the island's movable bodies (every movable body of its
+// manifolds, ascending, as ContactIsland::bodies holds them): the solver has
+// them already, and sorting them again was a tenth of a sphere pile's
+// colouring.
+ConstraintColouring colourConstraints(const std::vector<ContactManifold>& all,
+                                      const std::vector<std::uint32_t>& manifolds, const std::vector<bool>& movable,
+                                      std::span<const std::uint32_t> islandBodies,
                                       int colourLimit = ConstraintColouring::maxColours);
 
 }  // namespace physdbg

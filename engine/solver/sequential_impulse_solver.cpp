@@ -468,7 +468,7 @@ void SequentialImpulseSolver::runBatch(std::vector<RigidBody>& bodies, const std
 // constraint, packed into its group's lanes or kept for its single manifold.
 void SequentialImpulseSolver::planIsland(const std::vector<RigidBody>& bodies, std::vector<ContactManifold>& manifolds,
                                          const std::vector<bool>& movable, IslandWork& work) {
-  ConstraintColouring colouring = colourConstraints(manifolds, work.manifolds, movable);
+  ConstraintColouring colouring = colourConstraints(manifolds, work.manifolds, movable, work.bodies);
   work.singles.clear();
   work.overflow = std::move(colouring.overflow);
   work.colours.assign(colouring.colours.size(), ColourWork{});
