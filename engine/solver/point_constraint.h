@@ -17,9 +17,10 @@ namespace physdbg {
 using ManifoldTangents = std::array<Vec3, 2>;
 
 // No member is initialised by default: the solver builds normal rows on the
-// stack for every loaded manifold (loadedHertz) and need not zero 472 bytes a
-// point first. The builders write every field they are asked for; a vector
-// of them is zeroed by value-initialisation.
+// stack for every loaded manifold (loadedHertz) and need not zero 416 bytes a
+// point first. The builders write every field they are asked for, and the
+// solver's store of them is not zeroed either (only the manifolds solved one
+// by one, or that bounce, write theirs).
 struct PointConstraint {
   Vec3 armA, armB;  // from the centres of mass at the start of the step
   Vec3 crossA[3], crossB[3];

@@ -1,6 +1,6 @@
 // SequentialImpulseSolver: each point's constraint rows (point_constraint.h),
 // built where they are used rather than stored for the whole step. A
-// PointConstraint is 472 bytes, and writing one for every point before the
+// PointConstraint is 416 bytes, and writing one for every point before the
 // islands are known, then reading it back to pack the SIMD lanes, cost more
 // than building it. Now a batch builds its wide groups' constraints straight
 // into their lanes, four manifolds at once (buildWideManifolds), and only

@@ -1,15 +1,16 @@
 #pragma once
 // Structure-of-arrays contact rows for the wide solve: up to simd::width
-// manifolds of one colour (constraint_colouring.h), one per SIMD lane, each
-// with its four point slots (a manifold with fewer points leaves the rest
-// empty: zero mass, zero impulse, so they change nothing). Lanes of a group
+// manifolds of one colour (constraint_colouring.h), one per SIMD lane, with
+// as many point slots as the group's largest manifold has points (a manifold
+// with fewer points leaves the rest empty: zero mass, zero impulse, so they
+// change nothing). Lanes of a group
 // share no movable body, so the group gathers its bodies' velocities once,
 // solves every point of every lane at once, and scatters them back.
 //
 // Each lane does exactly what the scalar solver does for its manifold, in the
 // same order: normal rows point by point (in reverse on alternate sweeps;
-// empty slots come last, so reversing all four slots visits the real points
-// in their reverse order), then friction. The speculative manifolds solved
+// empty slots come last, so reversing all the group's slots visits the real
+// points in their reverse order), then friction. The speculative manifolds solved
 // all points together (the 4x4 approach solve) stay scalar. An isotropic
 // group's turns (cross times scale) are the scalar turns as numbers; only a
 // zero may come out with the other sign, which changes no sum.
