@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <iostream>
 #include <limits>
 #include <sstream>
 
@@ -131,6 +132,7 @@ std::optional<CollisionDevice> readCollisionDevice(const Arguments& arguments) {
 
 SceneDescription readScene(const Arguments& arguments) {
   SceneDescription scene = resolveScene(arguments.positional()[0]);
+  for (const std::string& note : scene.notes) std::cerr << "note: " << note << "\n";
   if (const std::optional<SolverKind> kind = readSolverKind(arguments)) scene.world.solver.kind = *kind;
   if (const std::optional<int> threads = readThreads(arguments)) scene.world.threads = *threads;
   if (const std::optional<CollisionDevice> device = readCollisionDevice(arguments))

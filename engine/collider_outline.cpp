@@ -1,5 +1,6 @@
 #include "engine/collider_outline.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -8,6 +9,7 @@
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/convex_mesh_collider.h"
 #include "engine/colliders/sphere_collider.h"
+#include "engine/colliders/triangle_mesh_collider.h"
 
 namespace physdbg {
 namespace {
@@ -101,6 +103,25 @@ Outline hullOutline(const ConvexMeshCollider& hull) {
   return outline;
 }
 
+// A mesh need not be closed nor consistently wound, so the hull's trick of
+// keeping one walk per edge does not hold: its edges are sorted and each is
+// drawn once.
+Outline meshOutline(const TriangleMeshCollider& mesh) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  edges.reserve(3 * mesh.triangles().size());
+  for (const MeshTriangle& triangle : mesh.triangles())
+    for (int e = 0; e < 3; ++e) {
+      const std::uint32_t p = triangle[e], q = triangle[(e + 1) % 3];
+      edges.emplace_back(std::min(p, q), std::max(p, q));
+    }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  Outline outline;
+  outline.reserve(edges.size());
+  for (const auto& [p, q] : edges) outline.push_back({mesh.vertices()[p], mesh.vertices()[q]});
+  return outline;
+}
+
 }  // namespace
 
 std::vector<OutlineSegment> localOutline(const Collider& collider) {
@@ -115,6 +136,12 @@ std::vector<OutlineSegment> localOutline(const Collider& collider) {
       return boxOutline(static_cast<const BoxCollider&>(collider).halfExtents());
     case ColliderKind::ConvexMesh:
       return hullOutline(static_cast<const ConvexMeshCollider&>(collider));
+    case ColliderKind::TriangleMesh:
+      return meshOutline(static_cast<const TriangleMeshCollider&>(collider));
+    case ColliderKind::Triangle: {
+      const auto& corners = static_cast<const TriangleCollider&>(collider).corners();
+      return {{corners[0], corners[1]}, {corners[1], corners[2]}, {corners[2], corners[0]}};
+    }
   }
   return {};
 }

@@ -4,7 +4,8 @@
 // touches and how it spins. A sphere gets three great circles fixed in its
 // body (so rotation shows), a capsule its end circles, side lines and cap
 // arcs (its silhouette from any side), a box its twelve edges, a convex hull
-// the edges of its merged faces (no triangle diagonals inside a flat face).
+// the edges of its merged faces (no triangle diagonals inside a flat face),
+// a triangle mesh every edge of its triangles once.
 //
 // Nothing is cached per collider: the only search a hull would need (drawing
 // each edge once) is avoided by the hull's winding, so the work per frame is

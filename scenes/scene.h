@@ -52,6 +52,9 @@ struct SceneDescription {
   std::vector<ScheduledState> states;   // "set": state changes during the run (world ids)
   std::optional<SceneCamera> camera;
   std::optional<std::string> layers;  // the scene's default debug layers
+  // What the loader did that the file did not say, for the user to read
+  // (degenerate mesh triangles dropped): "file: key: what".
+  std::vector<std::string> notes;
 };
 
 // `sourceName` is used in error messages (usually the file path).

@@ -13,6 +13,10 @@ inline constexpr int maxNesting = 32;                       // arrays and object
 inline constexpr long long maxBodies = 100'000;  // after `repeat`; a touching pile costs ~5 KB a body
 inline constexpr std::size_t maxBodyNameLength = 64;  // a body's "name": a label, not a document
 inline constexpr std::size_t maxHullPoints = 100'000;       // per convex shape
+// Per triangle mesh: a big level, and about 1 GB built (vertices 24 B,
+// triangles 12 B, normals 24 B, hierarchy ~30 B a triangle).
+inline constexpr std::size_t maxMeshVertices = 10'000'000;
+inline constexpr std::size_t maxMeshTriangles = 10'000'000;
 inline constexpr long long maxSteps = 10'000'000;
 inline constexpr std::size_t maxForces = 10'000;  // "forces" entries: each is looked at every step
 inline constexpr std::size_t maxStates = 10'000;  // "set" entries: each is looked at every step

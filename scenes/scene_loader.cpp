@@ -14,6 +14,7 @@
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/convex_mesh_collider.h"
 #include "engine/colliders/sphere_collider.h"
+#include "engine/colliders/triangle_mesh_collider.h"
 #include "debugdraw/primitives.h"
 #include "scenes/json_reader.h"
 #include "scenes/scene.h"
@@ -43,10 +44,60 @@ std::shared_ptr<const Collider> readConvex(const JsonReader& reader, const json&
   }
 }
 
-std::shared_ptr<const Collider> readShape(const JsonReader& reader, const json& value, const std::string& path) {
+// {"vertices": [[x, y, z], ...], "triangles": [[i, j, k], ...]}, sizes
+// bounded before anything is built; indices checked here so that the error
+// names the triangle's own key.
+std::shared_ptr<const Collider> readMesh(const JsonReader& reader, const json& parameters, const std::string& path,
+                                         std::vector<std::string>& notes) {
+  reader.requireObject(parameters, path);
+  reader.checkKeys(parameters, path, {"vertices", "triangles", "active_edge_degrees"});
+  const json& vertexList = reader.array(reader.required(parameters, path, "vertices"), path + ".vertices", 0);
+  const json& triangleList = reader.array(reader.required(parameters, path, "triangles"), path + ".triangles", 0);
+  if (vertexList.size() > limits::maxMeshVertices)
+    reader.fail(path + ".vertices", "has " + std::to_string(vertexList.size()) + " vertices (at most " +
+                                        std::to_string(limits::maxMeshVertices) + ")");
+  if (triangleList.size() > limits::maxMeshTriangles)
+    reader.fail(path + ".triangles", "has " + std::to_string(triangleList.size()) + " triangles (at most " +
+                                         std::to_string(limits::maxMeshTriangles) + ")");
+  if (triangleList.empty()) reader.fail(path + ".triangles", "is empty: a mesh needs at least one triangle");
+  std::vector<Vec3> vertices;
+  vertices.reserve(vertexList.size());
+  for (std::size_t i = 0; i < vertexList.size(); ++i)
+    vertices.push_back(reader.vec3(vertexList[i], path + ".vertices[" + std::to_string(i) + "]"));
+  std::vector<MeshTriangle> triangles;
+  triangles.reserve(triangleList.size());
+  const auto lastVertex = static_cast<long long>(vertices.size()) - 1;
+  for (std::size_t k = 0; k < triangleList.size(); ++k) {
+    const std::string here = path + ".triangles[" + std::to_string(k) + "]";
+    const json& corners = reader.array(triangleList[k], here, 3);
+    MeshTriangle triangle;
+    for (int c = 0; c < 3; ++c) {
+      const std::string corner = here + "[" + std::to_string(c) + "]";
+      if (lastVertex < 0) reader.fail(corner, "names a vertex, but the mesh has none");
+      triangle[c] = static_cast<std::uint32_t>(reader.integer(corners[c], corner, 0, lastVertex));
+    }
+    triangles.push_back(triangle);
+  }
+  double degrees = TriangleMeshCollider::defaultActiveEdgeDegrees;
+  if (parameters.contains("active_edge_degrees"))
+    degrees = reader.inRange(parameters["active_edge_degrees"], path + ".active_edge_degrees", 0.0, 180.0);
+  try {
+    auto mesh = std::make_shared<TriangleMeshCollider>(std::move(vertices), triangles, degrees);
+    if (mesh->droppedTriangles() > 0)
+      notes.push_back(reader.source() + ": " + path + ": dropped " + std::to_string(mesh->droppedTriangles()) +
+                      " degenerate triangle" + (mesh->droppedTriangles() == 1 ? "" : "s") + " (no area) of " +
+                      std::to_string(triangles.size()));
+    return mesh;
+  } catch (const std::invalid_argument& error) {
+    reader.fail(path, error.what());
+  }
+}
+
+std::shared_ptr<const Collider> readShape(const JsonReader& reader, const json& value, const std::string& path,
+                                          std::vector<std::string>& notes) {
   reader.requireObject(value, path);
   if (value.size() != 1)
-    reader.fail(path, "must have exactly one key naming the shape (sphere, box, capsule, convex)");
+    reader.fail(path, "must have exactly one key naming the shape (sphere, box, capsule, convex, mesh)");
   // Keep the iterator itself: key() and value() refer into the object, not into a temporary.
   const auto entry = value.begin();
   const std::string& kind = entry.key();
@@ -72,7 +123,8 @@ std::shared_ptr<const Collider> readShape(const JsonReader& reader, const json& 
                                              reader.nonNegative(parameters["half_height"], here + ".half_height"));
   }
   if (kind == "convex") return readConvex(reader, parameters, here);
-  reader.fail(path, "unknown shape '" + excerpt(kind) + "' (known: sphere, box, capsule, convex)");
+  if (kind == "mesh") return readMesh(reader, parameters, here, notes);
+  reader.fail(path, "unknown shape '" + excerpt(kind) + "' (known: sphere, box, capsule, convex, mesh)");
 }
 
 void readBodyKeys(const JsonReader& reader, const json& value, const std::string& path, BodyDefinition& body) {
@@ -244,8 +296,11 @@ void readBody(const JsonReader& reader, const json& value, std::size_t entry, Sc
                     "lock_translation", "lock_rotation", "repeat", "kinematic", "add_at_step", "remove_at_step",
                     "density", "inertia", "asleep"});
   BodyDefinition body;
-  body.collider = readShape(reader, reader.required(value, path, "shape"), path + ".shape");
+  body.collider = readShape(reader, reader.required(value, path, "shape"), path + ".shape", scene.notes);
   readBodyKeys(reader, value, path, body);
+  if (body.collider->kind() == ColliderKind::TriangleMesh && !body.isStatic && !body.isKinematic)
+    reader.fail(path + ".shape.mesh", "a triangle mesh has no volume and no inside, so it cannot be dynamic: "
+                                      "give the body \"static\": true or \"kinematic\": true");
   readMassKeys(reader, value, path, body);
   body = aboutCentreOfMass(body);  // the scene states the body where its centre of mass is
   const std::string name = value.contains("name") ? readBodyName(reader, value["name"], path + ".name") : "";

@@ -8,6 +8,8 @@ const char* colliderKindName(ColliderKind kind) {
     case ColliderKind::Box: return "box";
     case ColliderKind::Capsule: return "capsule";
     case ColliderKind::ConvexMesh: return "convex";
+    case ColliderKind::Triangle: return "triangle";
+    case ColliderKind::TriangleMesh: return "mesh";
   }
   return "unknown";
 }

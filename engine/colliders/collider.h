@@ -8,7 +8,11 @@
 
 namespace physdbg {
 
-enum class ColliderKind { Sphere, Box, Capsule, ConvexMesh };
+// Triangle is one triangle of a TriangleMesh, made by the narrow phase for a
+// test; TriangleMesh is the static mesh itself, which only static and
+// kinematic bodies hold and which has no support function worth calling
+// (its localSupport scans every vertex).
+enum class ColliderKind { Sphere, Box, Capsule, ConvexMesh, Triangle, TriangleMesh };
 
 const char* colliderKindName(ColliderKind kind);
 

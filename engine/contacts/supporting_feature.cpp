@@ -6,6 +6,7 @@
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/convex_mesh_collider.h"
 #include "engine/colliders/sphere_collider.h"
+#include "engine/colliders/triangle_collider.h"
 #include "engine/contacts/box_face.h"
 
 namespace physdbg {
@@ -56,6 +57,18 @@ void capsuleFeature(const CapsuleCollider& capsule, const Transform& transform, 
   feature.index = localDirection.y() < 0 ? 2 : 1;
 }
 
+// Either side of a mesh's triangle can be touched: the face toward the
+// direction, wound counter-clockwise seen from that side.
+void triangleFace(const TriangleCollider& triangle, const Transform& transform, const Vec3& localDirection,
+                  SupportingFeature& feature) {
+  const auto& corners = triangle.corners();
+  const bool front = triangle.normal().dot(localDirection) >= 0.0;
+  feature.points.clear();
+  for (int i = 0; i < 3; ++i) feature.points.push_back(transform.apply(corners[front ? i : 2 - i]));
+  feature.normal = transform.rotation * (front ? triangle.normal() : Vec3(-triangle.normal()));
+  feature.index = front ? 0 : 1;
+}
+
 }  // namespace
 
 void findSupportingFeature(const Collider& collider, const Transform& transform, const Vec3& direction,
@@ -72,7 +85,11 @@ void findSupportingFeature(const Collider& collider, const Transform& transform,
     case ColliderKind::Capsule:
       capsuleFeature(static_cast<const CapsuleCollider&>(collider), transform, localDirection, feature);
       return;
+    case ColliderKind::Triangle:
+      triangleFace(static_cast<const TriangleCollider&>(collider), transform, localDirection, feature);
+      return;
     case ColliderKind::Sphere:
+    case ColliderKind::TriangleMesh:  // met one triangle at a time (mesh_contacts.h); a point if asked
       feature.points.assign(1, collider.support(transform, direction));
       feature.index = 0;
       return;

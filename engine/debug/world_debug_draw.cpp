@@ -13,6 +13,7 @@
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/convex_mesh_collider.h"
 #include "engine/colliders/sphere_collider.h"
+#include "engine/colliders/triangle_mesh_collider.h"
 #include "engine/world.h"
 
 namespace physdbg {
@@ -49,6 +50,17 @@ std::shared_ptr<const dd::TriangleMesh> hullMesh(const ConvexMeshCollider& hull,
   return mesh;
 }
 
+std::shared_ptr<const dd::TriangleMesh> levelMesh(const TriangleMeshCollider& level, std::uint64_t id) {
+  auto mesh = std::make_shared<dd::TriangleMesh>();
+  mesh->id = id;
+  mesh->vertices.reserve(level.vertices().size());
+  for (const Vec3& vertex : level.vertices()) mesh->vertices.push_back(vertex.cast<float>());
+  mesh->indices.reserve(3 * level.triangles().size());
+  for (const MeshTriangle& triangle : level.triangles())
+    for (const std::uint32_t corner : triangle) mesh->indices.push_back(corner);
+  return mesh;
+}
+
 void emitShape(const RigidBody& body, dd::Color color, const std::shared_ptr<const dd::TriangleMesh>& mesh,
                dd::Frame& frame) {
   const Collider& collider = body.collider();
@@ -67,8 +79,10 @@ void emitShape(const RigidBody& body, dd::Color color, const std::shared_ptr<con
       break;
     }
     case ColliderKind::ConvexMesh:
+    case ColliderKind::TriangleMesh:
       if (mesh) frame.meshes.push_back({body.position(), body.orientation(), mesh, color});
       break;
+    case ColliderKind::Triangle: break;  // made only inside the narrow phase
   }
 }
 
@@ -226,17 +240,21 @@ std::vector<int> shownContactCounts(const std::vector<ShownContact>& points, std
   return counts;
 }
 
-// One drawing mesh per convex collider, shared by the bodies that share it;
-// ids follow body order so they are the same run after run.
+// One drawing mesh per convex or triangle-mesh collider, shared by the
+// bodies that share it; ids follow body order so they are the same run
+// after run.
 std::vector<std::shared_ptr<const dd::TriangleMesh>> hullMeshes(const std::vector<RigidBody>& bodies) {
   std::vector<std::shared_ptr<const dd::TriangleMesh>> meshes(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const Collider* collider = &bodies[i].collider();
-    if (collider->kind() != ColliderKind::ConvexMesh) continue;
+    const ColliderKind kind = collider->kind();
+    if (kind != ColliderKind::ConvexMesh && kind != ColliderKind::TriangleMesh) continue;
     for (std::size_t j = 0; j < i && !meshes[i]; ++j) {
       if (&bodies[j].collider() == collider) meshes[i] = meshes[j];
     }
-    if (!meshes[i]) meshes[i] = hullMesh(static_cast<const ConvexMeshCollider&>(*collider), i + 1);
+    if (meshes[i]) continue;
+    meshes[i] = kind == ColliderKind::ConvexMesh ? hullMesh(static_cast<const ConvexMeshCollider&>(*collider), i + 1)
+                                                 : levelMesh(static_cast<const TriangleMeshCollider&>(*collider), i + 1);
   }
   return meshes;
 }

@@ -133,6 +133,10 @@ RigidBody::RigidBody(const BodyDefinition& definition)
   if (isStatic_ && isKinematic_) throw std::invalid_argument("a body cannot be both static and kinematic");
   if (definition.localInertia && !isDynamic())
     throw std::invalid_argument("a static or kinematic body has no inertia: nothing turns it");
+  const ColliderKind kind = collider_->kind();
+  if (isDynamic() && (kind == ColliderKind::TriangleMesh || kind == ColliderKind::Triangle))
+    throw std::invalid_argument(std::string("a ") + colliderKindName(kind) +
+                                " has no volume and no inside: only a static or kinematic body can hold one");
   if (!isDynamic()) {  // infinite mass: nothing pushes it
     mass_ = 0.0;
     inverseMass_ = 0.0;

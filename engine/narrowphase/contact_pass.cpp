@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 
 #include "engine/contacts/manifold_builder.h"
+#include "engine/narrowphase/analytic_contacts.h"
 #include "engine/narrowphase/linear_cast.h"
 #include "engine/narrowphase/narrow_phase.h"
 #include "engine/parallel/task_system.h"
@@ -88,11 +90,23 @@ ContactPass::PairOutcome ContactPass::screenPair(const BodyPair& pair, const Ste
 }
 
 // Writes into `answer` in place.
-ContactPass::PairOutcome ContactPass::answerPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer) const {
+ContactPass::PairOutcome ContactPass::answerPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer,
+                                                 MeshContactScratch& scratch, MeshContactCounts& meshCounts) const {
   const double reach = solver_->contactReach(measured(pair.a).reach, measured(pair.b).reach, context);
   answer.reach = reach;
   answer.kept = nullptr;
+  answer.mesh = false;
   const RigidBody &a = bodies()[pair.a], &b = bodies()[pair.b];
+  const bool meshIsA = a.collider().kind() == ColliderKind::TriangleMesh;
+  if (meshIsA || b.collider().kind() == ColliderKind::TriangleMesh) {
+    const RigidBody &mesh = meshIsA ? a : b, &other = meshIsA ? b : a;
+    answer.mesh = true;
+    answer.meshManifolds.clear();
+    answer.result = collideWithMesh(static_cast<const TriangleMeshCollider&>(mesh.collider()), mesh.transform(),
+                                    other.collider(), other.transform(), meshIsA, pair.a, pair.b, reach,
+                                    settings_.narrowPhase, scratch, answer.meshManifolds, meshCounts);
+    return PairOutcome::Tested;
+  }
   if (offload_ && offload_->handles(a.collider().kind(), b.collider().kind()) && !settings_.bothOrders)
     return PairOutcome::Offloaded;
   if (settings_.reuseContacts) {
@@ -149,11 +163,18 @@ void ContactPass::testPairs(const StepContext& context) {
   for (std::size_t i = 0; i < pairs().size(); ++i)
     if (pairOutcomes_[i] == PairOutcome::Near) nearPairs_.push_back(static_cast<std::uint32_t>(i));
   pairAnswers_.resize(nearPairs_.size());
+  std::mutex countsMutex;
   parallelFor(nearPairs_.size(), nearPairGrain, [&](std::size_t begin, std::size_t end) {
+    MeshContactScratch scratch;
+    MeshContactCounts meshCounts;
     for (std::size_t k = begin; k < end; ++k) {
       const std::uint32_t i = nearPairs_[k];
-      pairOutcomes_[i] = answerPair(pairs()[i], context, pairAnswers_[k]);
+      pairOutcomes_[i] = answerPair(pairs()[i], context, pairAnswers_[k], scratch, meshCounts);
     }
+    if (meshCounts.triangles == 0) return;
+    const std::lock_guard lock(countsMutex);
+    counts_.narrowPhase.meshTriangles += meshCounts.triangles;
+    counts_.narrowPhase.meshCorrected += meshCounts.corrected;
   });
   if (offload_) testOffloadedPairs();
   if (settings_.castFastPairs) castFastPairs(context);
@@ -177,7 +198,7 @@ void ContactPass::castFastPairs(const StepContext& context) {
     const BodyPair& pair = pairs()[nearPairs_[k]];
     const PairAnswer& answer = pairAnswers_[k];
     pairAnswers_[k].cast = -1;
-    if (answer.kept || answer.result.status != ContactStatus::Separated ||
+    if (answer.kept || answer.mesh || answer.result.status != ContactStatus::Separated ||
         pairOutcomes_[nearPairs_[k]] == PairOutcome::Offloaded)
       continue;
     const double smallest = std::min(bodies()[pair.a].collider().localBounds().halfExtents().minCoeff(),
@@ -245,6 +266,10 @@ void ContactPass::gatherContacts(const StepContext& context) {
       continue;
     }
     const PairAnswer& test = pairAnswers_[k++];
+    if (test.mesh) {
+      gatherMeshPair(pairs()[i], test);
+      continue;
+    }
     const Contact contact{pairs()[i].a, pairs()[i].b, test.result};
     if (test.kept)
       counts_.narrowPhase.addReused();
@@ -263,6 +288,26 @@ void ContactPass::gatherContacts(const StepContext& context) {
     contacts_.push_back(contact);
   }
   counts_.manifoldPoints += solver_->addCandidates(candidates_, reaches_, bodies(), context, manifoldSources_);
+}
+
+// A mesh pair's manifolds go to the solver prebuilt, each as a candidate
+// whose result is its deepest point; the pair counts once, as its deepest
+// answer, among the contacts.
+void ContactPass::gatherMeshPair(const BodyPair& pair, const PairAnswer& answer) {
+  counts_.narrowPhase.add(answer.result);
+  for (const ContactManifold& manifold : answer.meshManifolds) {
+    const ManifoldPoint* deepest = &manifold.points[0];
+    for (int p = 1; p < manifold.pointCount; ++p)
+      if (manifold.points[p].separation < deepest->separation) deepest = &manifold.points[p];
+    candidates_.push_back({pair.a, pair.b,
+                           classifyContact(deepest->separation, manifold.normal, deepest->pointA, deepest->pointB,
+                                           settings_.narrowPhase.touchingTolerance)});
+    reaches_.push_back(answer.reach);
+    manifoldSources_.push_back({&manifold, nullptr});
+  }
+  const ContactResult& result = answer.result;
+  if (result.status == ContactStatus::Separated && result.distance > solver_->touchingGap()) return;
+  contacts_.push_back({pair.a, pair.b, result});
 }
 
 // The answers worth taking again next pass: this pass's manifolds (in pair

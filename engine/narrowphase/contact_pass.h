@@ -5,7 +5,9 @@
 //
 // Candidate pairs go through two parallel passes, gathered in pair order
 // (gatherContacts), so contacts, manifolds and counters come out as a serial
-// pass makes them. screenPair settles most pairs at the bounds and writes one
+// pass makes them. A pair with a triangle mesh gives a manifold per normal
+// (mesh_contacts.h), each handed to the solver as a candidate of its own,
+// and one contact, its deepest. screenPair settles most pairs at the bounds and writes one
 // byte each; answerPair runs the narrow phase on the few left (nearPairs_),
 // each into a dense slot. (A whole answer per pair, written by one thread and
 // read by another, was megabytes of cache lines crossing cores each step;
@@ -23,6 +25,7 @@
 #include "engine/contacts/contact_manifold.h"
 #include "engine/contacts/contact_reuse.h"
 #include "engine/dynamics/rigid_body.h"
+#include "engine/narrowphase/mesh_contacts.h"
 #include "engine/narrowphase/narrow_phase_options.h"
 #include "engine/solver/contact_solver.h"
 #include "engine/step_profile.h"
@@ -82,6 +85,8 @@ class ContactPass {
     ContactResult reversed;                 // B-A, tested only with bothOrders
     const ReusableContact* kept = nullptr;  // the last answer, carried to now (result here, manifold by the solver)
     int cast = -1;                          // its manifold at the time of impact, in castManifolds_
+    bool mesh = false;                      // a body against a triangle mesh: its manifolds are below
+    std::vector<ContactManifold> meshManifolds;  // one per normal (mesh_contacts.h); storage kept between passes
   };
   // What the pair screen needs of each body in a pair, this pass (measureBodies).
   struct MeasuredBody {
@@ -98,7 +103,9 @@ class ContactPass {
   void parallelFor(std::size_t count, std::size_t grain,
                    const std::function<void(std::size_t, std::size_t)>& body) const;
   PairOutcome screenPair(const BodyPair& pair, const StepContext& context) const;
-  PairOutcome answerPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer) const;
+  PairOutcome answerPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer,
+                         MeshContactScratch& scratch, MeshContactCounts& meshCounts) const;
+  void gatherMeshPair(const BodyPair& pair, const PairAnswer& answer);
   void measureBodies(const StepContext& context);
   void testPairs(const StepContext& context);
   void testOffloadedPairs();

@@ -33,6 +33,8 @@ struct NarrowPhaseCounters {
   long long epa = 0;
   long long boxBox = 0;  // box pairs the separating-axis test ran on (some then also ran GJK)
   long long reused = 0;  // pairs that took their last answer again (contact_reuse.h), no test run
+  long long meshTriangles = 0;  // triangles of meshes tested against bodies (mesh_contacts.h)
+  long long meshCorrected = 0;  // of their contacts, those on an inactive edge given the face normal
 
   void add(const ContactResult& result) {
     ++pairs;
@@ -52,6 +54,8 @@ struct NarrowPhaseCounters {
     epa += other.epa;
     boxBox += other.boxBox;
     reused += other.reused;
+    meshTriangles += other.meshTriangles;
+    meshCorrected += other.meshCorrected;
     return *this;
   }
 };

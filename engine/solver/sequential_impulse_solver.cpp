@@ -309,6 +309,8 @@ const std::vector<Contact>& SequentialImpulseSolver::eventContacts(const std::ve
     const BodyPair pair{manifold.a, manifold.b};
     while (next < contacts.size() && pairOf(next) < pair) eventContacts_.push_back(contacts[next++]);
     if (next < contacts.size() && pairOf(next) == pair) continue;
+    // A pair against a mesh has a manifold per normal, and one event.
+    if (!eventContacts_.empty() && BodyPair{eventContacts_.back().a, eventContacts_.back().b} == pair) continue;
     if (const std::optional<Contact> impact = speculativeImpact(manifold, solverBodies_))
       eventContacts_.push_back(*impact);
   }

@@ -5,6 +5,13 @@
 #include "engine/parallel/task_system.h"
 
 namespace physdbg {
+namespace {
+
+// cos 8 degrees: a mesh's faces that need manifolds of their own differ by
+// more than its active-edge angle (5 degrees) or meet at a concave edge.
+constexpr float sameFaceCosine = 0.99f;
+
+}  // namespace
 
 void WarmStartMemory::remember(const std::vector<ContactManifold>& manifolds) {
   manifolds_.clear();
@@ -12,7 +19,8 @@ void WarmStartMemory::remember(const std::vector<ContactManifold>& manifolds) {
   for (const ContactManifold& manifold : manifolds) {
     manifolds_.push_back({{manifold.a, manifold.b},
                           static_cast<std::uint32_t>(points_.size()),
-                          static_cast<std::uint32_t>(manifold.pointCount)});
+                          static_cast<std::uint32_t>(manifold.pointCount),
+                          manifold.normal.cast<float>()});
     for (int p = 0; p < manifold.pointCount; ++p) {
       const ManifoldPoint& point = manifold.points[p];
       points_.push_back({point.localA, point.featureId, point.normalImpulse,
@@ -69,7 +77,21 @@ void WarmStartMemory::carryInto(std::vector<ContactManifold>& manifolds, double 
       const BodyPair pair{manifold.a, manifold.b};
       while (old != manifolds_.end() && old->pair < pair) ++old;
       if (old == manifolds_.end()) return;
-      if (old->pair == pair) carry(*old, manifold, reach);
+      if (old->pair != pair) continue;
+      const auto samePair = [&](std::size_t other) {
+        return other < manifolds.size() && manifolds[other].a == manifold.a && manifolds[other].b == manifold.b;
+      };
+      const bool several = (old + 1 != manifolds_.end() && (old + 1)->pair == pair) || samePair(m + 1) ||
+                           (m > 0 && samePair(m - 1));
+      if (!several) {
+        carry(*old, manifold, reach);
+        continue;
+      }
+      const Eigen::Vector3f normal = manifold.normal.cast<float>();
+      auto best = old;
+      for (auto candidate = old; candidate != manifolds_.end() && candidate->pair == pair; ++candidate)
+        if (candidate->normal.dot(normal) > best->normal.dot(normal)) best = candidate;
+      if (best->normal.dot(normal) >= sameFaceCosine) carry(*best, manifold, reach);
     }
   };
   constexpr std::size_t grain = 1024;  // a carry is a few cache lines

@@ -11,6 +11,11 @@
 // to edge, a sway of a micrometre moves a corner across the other face's side
 // and the clip makes a new point in the same place. Losing its impulse would
 // drop the load it held for a step and kick the stack.
+//
+// A pair against a triangle mesh can have a manifold per normal
+// (mesh_contacts.h): there each manifold takes from the old one of its pair
+// whose normal is nearest, if within about 8 degrees, so a body resting in a
+// gully does not hand one face's impulses to the other.
 #include <cstdint>
 #include <vector>
 
@@ -41,6 +46,7 @@ class WarmStartMemory {
     BodyPair pair;
     std::uint32_t firstPoint;
     std::uint32_t pointCount;
+    Eigen::Vector3f normal;  // only compared, between the manifolds of one pair
   };
   void carry(const Manifold& old, ContactManifold& manifold, double reach) const;
 
