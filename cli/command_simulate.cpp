@@ -161,6 +161,9 @@ int runSimulate(const std::vector<std::string>& args) {
       stats.awakeBodies, stats.lockedBodies, stats.sleepingBodies, stats.candidatePairs, stats.contacts,
       stats.manifoldPoints, stats.largestPenetration, stats.narrowPhase.fastPath, stats.narrowPhase.boxBox,
       stats.narrowPhase.gjk, stats.narrowPhase.epa, stats.narrowPhase.reused);
+  if (stats.narrowPhase.meshTriangles > 0)
+    std::printf("meshes: %lld triangles tested, %lld contacts on inactive edges given the face normal\n",
+                stats.narrowPhase.meshTriangles, stats.narrowPhase.meshCorrected);
   if (stats.substeps > 0)
     std::printf("solver: %d substeps, contacts at %.4g Hz\n", stats.substeps, stats.contactHertz);
   if (const auto* gpu = dynamic_cast<const gpu::GpuCollision*>(offload.get())) {

@@ -118,7 +118,10 @@ TEST(Cli, BadSceneFilesExitTwoNamingFileAndKey) {
                         Case{R"({"bodies": [{"shape": {"box": {"half_extents": [1, 1]}}}]})", "half_extents"},
                         Case{R"({"bodies": [], "dt": -1})", "dt"}, Case{R"({"bodies": [})", "malformed JSON"},
                         Case{R"({"bodies": [], "wind": 3})", "wind"},
-                        Case{R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "mass": "heavy"}]})", "mass"}}) {
+                        Case{R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "mass": "heavy"}]})", "mass"},
+                        Case{R"({"bodies": [{"shape": {"mesh": {"vertices": [[0,0,0],[1,0,0],[0,0,1]],
+                             "triangles": [[0,2,3]]}}, "static": true}]})",
+                             "bodies[0].shape.mesh.triangles[0][2]"}}) {
     const std::string scene = dir.file("bad.json", c.json);
     for (const std::string& command : {"simulate " + scene, "render " + scene + " -o " + dir.path() + "/frames"}) {
       const Result result = run(command);
