@@ -17,6 +17,8 @@ inline constexpr std::size_t maxHullPoints = 100'000;       // per convex shape
 // triangles 12 B, normals 24 B, hierarchy ~30 B a triangle).
 inline constexpr std::size_t maxMeshVertices = 10'000'000;
 inline constexpr std::size_t maxMeshTriangles = 10'000'000;
+inline constexpr std::uintmax_t maxMeshFileBytes = std::uintmax_t{1} << 30;  // a mesh file Assimp reads
+inline constexpr std::size_t maxMeshNodes = 10'000;  // names in a mesh's "nodes"
 inline constexpr long long maxSteps = 10'000'000;
 inline constexpr std::size_t maxForces = 10'000;  // "forces" entries: each is looked at every step
 inline constexpr std::size_t maxStates = 10'000;  // "set" entries: each is looked at every step

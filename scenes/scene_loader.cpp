@@ -17,6 +17,7 @@
 #include "engine/colliders/triangle_mesh_collider.h"
 #include "debugdraw/primitives.h"
 #include "scenes/json_reader.h"
+#include "scenes/mesh_import.h"
 #include "scenes/scene.h"
 #include "scenes/scene_limits.h"
 
@@ -47,10 +48,8 @@ std::shared_ptr<const Collider> readConvex(const JsonReader& reader, const json&
 // {"vertices": [[x, y, z], ...], "triangles": [[i, j, k], ...]}, sizes
 // bounded before anything is built; indices checked here so that the error
 // names the triangle's own key.
-std::shared_ptr<const Collider> readMesh(const JsonReader& reader, const json& parameters, const std::string& path,
-                                         std::vector<std::string>& notes) {
-  reader.requireObject(parameters, path);
-  reader.checkKeys(parameters, path, {"vertices", "triangles", "active_edge_degrees"});
+void readInlineMesh(const JsonReader& reader, const json& parameters, const std::string& path,
+                    std::vector<Vec3>& vertices, std::vector<MeshTriangle>& triangles) {
   const json& vertexList = reader.array(reader.required(parameters, path, "vertices"), path + ".vertices", 0);
   const json& triangleList = reader.array(reader.required(parameters, path, "triangles"), path + ".triangles", 0);
   if (vertexList.size() > limits::maxMeshVertices)
@@ -60,11 +59,9 @@ std::shared_ptr<const Collider> readMesh(const JsonReader& reader, const json& p
     reader.fail(path + ".triangles", "has " + std::to_string(triangleList.size()) + " triangles (at most " +
                                          std::to_string(limits::maxMeshTriangles) + ")");
   if (triangleList.empty()) reader.fail(path + ".triangles", "is empty: a mesh needs at least one triangle");
-  std::vector<Vec3> vertices;
   vertices.reserve(vertexList.size());
   for (std::size_t i = 0; i < vertexList.size(); ++i)
     vertices.push_back(reader.vec3(vertexList[i], path + ".vertices[" + std::to_string(i) + "]"));
-  std::vector<MeshTriangle> triangles;
   triangles.reserve(triangleList.size());
   const auto lastVertex = static_cast<long long>(vertices.size()) - 1;
   for (std::size_t k = 0; k < triangleList.size(); ++k) {
@@ -78,15 +75,74 @@ std::shared_ptr<const Collider> readMesh(const JsonReader& reader, const json& p
     }
     triangles.push_back(triangle);
   }
+}
+
+// {"file": "level.obj", "scale": s or [x, y, z], "up_axis": "y" or "z",
+// "nodes": ["name", ...]}: the path taken from the scene file's folder.
+void readMeshFile(const JsonReader& reader, const json& parameters, const std::string& path,
+                  std::vector<Vec3>& vertices, std::vector<MeshTriangle>& triangles, std::vector<std::string>& notes) {
+  const std::filesystem::path named = reader.string(parameters["file"], path + ".file");
+  const std::filesystem::path file =
+      named.is_absolute() ? named : std::filesystem::path(reader.source()).parent_path() / named;
+  MeshImportOptions options;
+  options.maxTriangles = limits::maxMeshTriangles;
+  options.maxFileBytes = limits::maxMeshFileBytes;
+  if (parameters.contains("scale")) {
+    const json& scale = parameters["scale"];
+    options.scale = scale.is_array() ? reader.sizeVec3(scale, path + ".scale")
+                                     : Vec3::Constant(reader.size(scale, path + ".scale"));
+  }
+  if (parameters.contains("up_axis")) {
+    const std::string up = reader.string(parameters["up_axis"], path + ".up_axis");
+    if (up != "y" && up != "z") reader.fail(path + ".up_axis", "must be \"y\" or \"z\", not '" + excerpt(up) + "'");
+    options.zUp = up == "z";
+  }
+  if (parameters.contains("nodes")) {
+    const json& list = reader.array(parameters["nodes"], path + ".nodes", 0);
+    if (list.size() > limits::maxMeshNodes)
+      reader.fail(path + ".nodes", "names " + std::to_string(list.size()) + " nodes (at most " +
+                                       std::to_string(limits::maxMeshNodes) + ")");
+    for (std::size_t i = 0; i < list.size(); ++i)
+      options.nodes.push_back(reader.string(list[i], path + ".nodes[" + std::to_string(i) + "]"));
+  }
+  try {
+    ImportedMesh mesh = importMesh(file.string(), options);
+    vertices = std::move(mesh.vertices);
+    triangles = std::move(mesh.triangles);
+    if (mesh.skippedPrimitives > 0)
+      notes.push_back(reader.source() + ": " + path + ": skipped " + std::to_string(mesh.skippedPrimitives) +
+                      " points and lines of " + file.string());
+  } catch (const MeshImportError& error) {
+    reader.fail(path + ".file", "'" + file.string() + "': " + error.what());
+  }
+}
+
+// A triangle mesh given inline or by file; see scenes/README.md.
+std::shared_ptr<const Collider> readMesh(const JsonReader& reader, const json& parameters, const std::string& path,
+                                         std::vector<std::string>& notes) {
+  reader.requireObject(parameters, path);
+  reader.checkKeys(parameters, path,
+                   {"vertices", "triangles", "active_edge_degrees", "file", "scale", "up_axis", "nodes"});
+  std::vector<Vec3> vertices;
+  std::vector<MeshTriangle> triangles;
+  const bool inFile = parameters.contains("file");
+  if (inFile && (parameters.contains("vertices") || parameters.contains("triangles")))
+    reader.fail(path, "has both file and vertices or triangles: give one");
+  if (!inFile)
+    for (const char* key : {"scale", "up_axis", "nodes"})
+      if (parameters.contains(key)) reader.fail(path + "." + key, "applies to a mesh file, and this mesh has none");
+  if (inFile) readMeshFile(reader, parameters, path, vertices, triangles, notes);
+  else readInlineMesh(reader, parameters, path, vertices, triangles);
   double degrees = TriangleMeshCollider::defaultActiveEdgeDegrees;
   if (parameters.contains("active_edge_degrees"))
     degrees = reader.inRange(parameters["active_edge_degrees"], path + ".active_edge_degrees", 0.0, 180.0);
+  const std::size_t given = triangles.size();
   try {
     auto mesh = std::make_shared<TriangleMeshCollider>(std::move(vertices), triangles, degrees);
     if (mesh->droppedTriangles() > 0)
       notes.push_back(reader.source() + ": " + path + ": dropped " + std::to_string(mesh->droppedTriangles()) +
                       " degenerate triangle" + (mesh->droppedTriangles() == 1 ? "" : "s") + " (no area) of " +
-                      std::to_string(triangles.size()));
+                      std::to_string(given));
     return mesh;
   } catch (const std::invalid_argument& error) {
     reader.fail(path, error.what());

@@ -9,6 +9,7 @@ packages=(
   libosmesa6-dev libglew-dev libstb-dev libpng-dev libegl-dev libegl-mesa0
   libbullet-dev libccd-dev
   libtbb-dev
+  libassimp-dev
   clang libclang-rt-14-dev
   parallel
 )

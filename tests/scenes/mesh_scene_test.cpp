@@ -56,7 +56,9 @@ TEST(MeshScene, BadMeshesNameTheKey) {
   EXPECT_NE(errorOf(body(quad, "")).find("cannot be dynamic"), std::string::npos);  // neither static nor kinematic
   EXPECT_NE(errorOf(body(std::string(quad) + R"(, "active_edge_degrees": 200)")).find("active_edge_degrees"),
             std::string::npos);
-  EXPECT_NE(errorOf(body(std::string(quad) + R"(, "file": "x.obj")")).find("file"), std::string::npos);
+  EXPECT_NE(errorOf(body(std::string(quad) + R"(, "file": "x.obj")")).find("both file and vertices"), std::string::npos);
+  EXPECT_NE(errorOf(body(std::string(quad) + R"(, "up_axis": "z")")).find("up_axis"), std::string::npos);
+  EXPECT_NE(errorOf(body(R"("file": "x.obj", "up_axis": "x")")).find("up_axis"), std::string::npos);
 }
 
 TEST(MeshScene, DegenerateTrianglesAreDroppedWithANote) {
