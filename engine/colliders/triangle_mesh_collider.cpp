@@ -85,10 +85,8 @@ void TriangleMeshCollider::markActiveEdges(double activeEdgeDegrees) {
       const bool consistent = t1[first.edge] == t2[(second.edge + 1) % 3];
       const Vec3 n1 = normals_[first.triangle];
       const Vec3 n2 = consistent ? normals_[second.triangle] : Vec3(-normals_[second.triangle]);
-      const Vec3& opposite = vertices_[t2[(second.edge + 2) % 3]];
-      // Above the first triangle's plane: a concave edge, smooth whatever its angle.
-      const bool concave = (opposite - vertices_[t1[first.edge]]).dot(n1) > 1e-12 * scale;
-      const bool active = !concave && n1.dot(n2) < cosThreshold;
+      const Vec3 beyond = vertices_[t2[(second.edge + 2) % 3]] - vertices_[t1[first.edge]];
+      const bool active = isActiveEdge(n1, n2, beyond, cosThreshold, 1e-12 * scale);
       if (!active) {
         activeEdges_[first.triangle] &= static_cast<std::uint8_t>(~(1u << first.edge));
         activeEdges_[second.triangle] &= static_cast<std::uint8_t>(~(1u << second.edge));
@@ -119,9 +117,9 @@ void TriangleMeshCollider::query(const Aabb& box, std::vector<std::uint32_t>& ou
   std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
 }
 
-TriangleCollider TriangleMeshCollider::triangle(std::uint32_t index) const {
+SourceTriangle TriangleMeshCollider::triangleAt(std::uint32_t index) const {
   const MeshTriangle& triangle = triangles_[index];
-  return TriangleCollider(vertices_[triangle[0]], vertices_[triangle[1]], vertices_[triangle[2]], normals_[index]);
+  return {{vertices_[triangle[0]], vertices_[triangle[1]], vertices_[triangle[2]]}, normals_[index], activeEdges_[index]};
 }
 
 Vec3 TriangleMeshCollider::localSupport(const Vec3& direction) const {
@@ -129,6 +127,17 @@ Vec3 TriangleMeshCollider::localSupport(const Vec3& direction) const {
   for (std::size_t i = 1; i < vertices_.size(); ++i)
     if (vertices_[i].dot(direction) > vertices_[best].dot(direction)) best = i;
   return vertices_[best];
+}
+
+}  // namespace physdbg
+
+namespace physdbg {
+
+const TriangleSource* triangleSourceOf(const Collider& collider) {
+  switch (collider.kind()) {
+    case ColliderKind::TriangleMesh: return &static_cast<const TriangleMeshCollider&>(collider);
+    default: return nullptr;
+  }
 }
 
 }  // namespace physdbg

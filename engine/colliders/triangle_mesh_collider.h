@@ -21,13 +21,13 @@
 
 #include "engine/colliders/collider.h"
 #include "engine/colliders/triangle_bvh.h"
-#include "engine/colliders/triangle_collider.h"
+#include "engine/colliders/triangle_source.h"
 
 namespace physdbg {
 
 using MeshTriangle = std::array<std::uint32_t, 3>;
 
-class TriangleMeshCollider final : public Collider {
+class TriangleMeshCollider final : public Collider, public TriangleSource {
  public:
   // Jolt's default too: a tessellated curve bends by less than this at each
   // edge and reads as smooth; a kerb or step bends by more.
@@ -50,9 +50,9 @@ class TriangleMeshCollider final : public Collider {
   const TriangleBvh& bvh() const { return bvh_; }
   // Appends to `out` the triangles whose boxes overlap `box` (mesh frame),
   // ascending.
-  void query(const Aabb& box, std::vector<std::uint32_t>& out) const;
+  void query(const Aabb& box, std::vector<std::uint32_t>& out) const override;
+  SourceTriangle triangleAt(std::uint32_t triangle) const override;
   Aabb triangleBounds(std::uint32_t triangle) const;
-  TriangleCollider triangle(std::uint32_t index) const;
 
   ColliderKind kind() const override { return ColliderKind::TriangleMesh; }
   Vec3 localSupport(const Vec3& direction) const override;

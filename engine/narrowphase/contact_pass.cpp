@@ -97,14 +97,15 @@ ContactPass::PairOutcome ContactPass::answerPair(const BodyPair& pair, const Ste
   answer.kept = nullptr;
   answer.mesh = false;
   const RigidBody &a = bodies()[pair.a], &b = bodies()[pair.b];
-  const bool meshIsA = a.collider().kind() == ColliderKind::TriangleMesh;
-  if (meshIsA || b.collider().kind() == ColliderKind::TriangleMesh) {
-    const RigidBody &mesh = meshIsA ? a : b, &other = meshIsA ? b : a;
+  const TriangleSource* sourceA = triangleSourceOf(a.collider());
+  const TriangleSource* source = sourceA ? sourceA : triangleSourceOf(b.collider());
+  if (source) {
+    const RigidBody &mesh = sourceA ? a : b, &other = sourceA ? b : a;
     answer.mesh = true;
     answer.meshManifolds.clear();
-    answer.result = collideWithMesh(static_cast<const TriangleMeshCollider&>(mesh.collider()), mesh.transform(),
-                                    other.collider(), other.transform(), meshIsA, pair.a, pair.b, reach,
-                                    settings_.narrowPhase, scratch, answer.meshManifolds, meshCounts);
+    answer.result = collideWithMesh(*source, mesh.transform(), other.collider(), other.transform(), sourceA != nullptr,
+                                    pair.a, pair.b, reach, settings_.narrowPhase, scratch, answer.meshManifolds,
+                                    meshCounts);
     return PairOutcome::Tested;
   }
   if (offload_ && offload_->handles(a.collider().kind(), b.collider().kind()) && !settings_.bothOrders)

@@ -58,10 +58,9 @@ ContactResult sphereTriangle(const TriangleCollider& triangle, const Transform& 
 // Whether the triangle's feature nearest `point` (mesh frame, on or by the
 // triangle) lies on the smooth part of the mesh: its face, an inactive edge,
 // or a corner whose two edges are both inactive.
-bool onSmoothFeature(const TriangleMeshCollider& mesh, std::uint32_t t, const Vec3& point) {
-  const MeshTriangle& triangle = mesh.triangles()[t];
-  const Vec3& a = mesh.vertices()[triangle[0]];
-  const Vec3 e1 = mesh.vertices()[triangle[1]] - a, e2 = mesh.vertices()[triangle[2]] - a, p = point - a;
+bool onSmoothFeature(const SourceTriangle& triangle, const Vec3& point) {
+  const Vec3& a = triangle.corners[0];
+  const Vec3 e1 = triangle.corners[1] - a, e2 = triangle.corners[2] - a, p = point - a;
   const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2), dp1 = p.dot(e1), dp2 = p.dot(e2);
   const double denominator = d11 * d22 - d12 * d12;
   const double v = (d22 * dp1 - d12 * dp2) / denominator, w = (d11 * dp2 - d12 * dp1) / denominator;
@@ -76,17 +75,16 @@ bool onSmoothFeature(const TriangleMeshCollider& mesh, std::uint32_t t, const Ve
     }
   }
   if (onCount == 0) return true;
-  if (onCount == 1) return !mesh.edgeActive(t, (on + 1) % 3);  // the edge opposite corner `on`
-  return !mesh.edgeActive(t, off) && !mesh.edgeActive(t, (off + 2) % 3);  // the two edges at corner `off`
+  if (onCount == 1) return !triangle.edgeActive((on + 1) % 3);  // the edge opposite corner `on`
+  return !triangle.edgeActive(off) && !triangle.edgeActive((off + 2) % 3);  // the two edges at corner `off`
 }
 
 // The answer with the face normal: the convex shape's deepest point below
 // the face's plane, on the side its centre is.
-ContactResult alongFace(const TriangleMeshCollider& mesh, std::uint32_t t, const Transform& meshPose,
-                        const Collider& convex, const Transform& convexPose, const ContactResult& found,
-                        double touchingTolerance) {
-  const Vec3& faceNormal = mesh.normal(t);
-  const Vec3 corner = mesh.vertices()[mesh.triangles()[t][0]];
+ContactResult alongFace(const SourceTriangle& triangle, const Transform& meshPose, const Collider& convex,
+                        const Transform& convexPose, const ContactResult& found, double touchingTolerance) {
+  const Vec3& faceNormal = triangle.normal;
+  const Vec3& corner = triangle.corners[0];
   const double centreSide = (meshPose.applyInverse(convexPose.position) - corner).dot(faceNormal);
   const double normalSide = (meshPose.rotation.conjugate() * found.normal).dot(faceNormal);
   const double side = centreSide != 0.0 ? centreSide : normalSide;
@@ -109,11 +107,10 @@ double signedDistance(const ContactResult& result) {
 // belong to the neighbour across the edge (which finds them itself) and are
 // dropped here. The clipped points of a face lie on it; the single point of
 // a shape that clips to nothing (a sphere, or a box over the neighbour) may not.
-void keepOnTriangle(const TriangleMeshCollider& mesh, std::uint32_t t, const Transform& meshPose, bool meshIsA,
+void keepOnTriangle(const SourceTriangle& triangle, const Transform& meshPose, bool meshIsA,
                     ContactManifold& manifold) {
-  const MeshTriangle& triangle = mesh.triangles()[t];
-  const Vec3& a = mesh.vertices()[triangle[0]];
-  const Vec3 e1 = mesh.vertices()[triangle[1]] - a, e2 = mesh.vertices()[triangle[2]] - a;
+  const Vec3& a = triangle.corners[0];
+  const Vec3 e1 = triangle.corners[1] - a, e2 = triangle.corners[2] - a;
   int kept = 0;
   for (int p = 0; p < manifold.pointCount; ++p) {
     const ManifoldPoint& point = manifold.points[p];
@@ -226,25 +223,25 @@ void mergeByNormal(MeshContactScratch& scratch, std::vector<ContactManifold>& ou
 
 }  // namespace
 
-ContactResult collideWithTriangle(const TriangleMeshCollider& mesh, std::uint32_t t, const Transform& meshPose,
-                                  const Collider& convex, const Transform& convexPose,
-                                  const NarrowPhaseOptions& options, double reach, bool* corrected) {
-  const TriangleCollider triangle = mesh.triangle(t);
+ContactResult collideWithTriangle(const SourceTriangle& triangle, const Transform& meshPose, const Collider& convex,
+                                  const Transform& convexPose, const NarrowPhaseOptions& options, double reach,
+                                  bool* corrected) {
+  const TriangleCollider shape = triangle.collider();
   ContactResult result =
       convex.kind() == ColliderKind::Sphere
-          ? sphereTriangle(triangle, meshPose, static_cast<const SphereCollider&>(convex), convexPose.position,
+          ? sphereTriangle(shape, meshPose, static_cast<const SphereCollider&>(convex), convexPose.position,
                            options.touchingTolerance)
-          : collide(triangle, meshPose, convex, convexPose, options);
+          : collide(shape, meshPose, convex, convexPose, options);
   if (corrected) *corrected = false;
   if (signedDistance(result) > reach) return result;
-  const double alongNormal = (meshPose.rotation.conjugate() * result.normal).dot(mesh.normal(t));
+  const double alongNormal = (meshPose.rotation.conjugate() * result.normal).dot(triangle.normal);
   if (std::abs(alongNormal) >= std::cos(meshMergeAngle)) return result;
-  if (!onSmoothFeature(mesh, t, meshPose.applyInverse(result.pointA))) return result;
+  if (!onSmoothFeature(triangle, meshPose.applyInverse(result.pointA))) return result;
   if (corrected) *corrected = true;
-  return alongFace(mesh, t, meshPose, convex, convexPose, result, options.touchingTolerance);
+  return alongFace(triangle, meshPose, convex, convexPose, result, options.touchingTolerance);
 }
 
-ContactResult collideWithMesh(const TriangleMeshCollider& mesh, const Transform& meshPose, const Collider& convex,
+ContactResult collideWithMesh(const TriangleSource& mesh, const Transform& meshPose, const Collider& convex,
                               const Transform& convexPose, bool meshIsA, std::uint32_t a, std::uint32_t b,
                               double reach, const NarrowPhaseOptions& options, MeshContactScratch& scratch,
                               std::vector<ContactManifold>& out, MeshContactCounts& counts) {
@@ -259,7 +256,8 @@ ContactResult collideWithMesh(const TriangleMeshCollider& mesh, const Transform&
   for (const std::uint32_t t : scratch.triangles) {
     ++counts.triangles;
     bool corrected = false;
-    ContactResult result = collideWithTriangle(mesh, t, meshPose, convex, convexPose, options, reach, &corrected);
+    const SourceTriangle source = mesh.triangleAt(t);
+    ContactResult result = collideWithTriangle(source, meshPose, convex, convexPose, options, reach, &corrected);
     const double distance = signedDistance(result);
     if (distance > reach) continue;
     counts.corrected += corrected ? 1 : 0;
@@ -267,10 +265,10 @@ ContactResult collideWithMesh(const TriangleMeshCollider& mesh, const Transform&
     ContactManifold& manifold = scratch.found.emplace_back();
     manifold.a = a;
     manifold.b = b;
-    const TriangleCollider triangle = mesh.triangle(t);
+    const TriangleCollider triangle = source.collider();
     if (meshIsA) buildGeneralManifold(triangle, meshPose, convex, convexPose, result, reach, scratch.manifold, manifold);
     else buildGeneralManifold(convex, convexPose, triangle, meshPose, result, reach, scratch.manifold, manifold);
-    if (corrected) keepOnTriangle(mesh, t, meshPose, meshIsA, manifold);
+    if (corrected) keepOnTriangle(source, meshPose, meshIsA, manifold);
     if (manifold.pointCount == 0) {
       scratch.found.pop_back();
       continue;

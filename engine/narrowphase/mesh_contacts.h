@@ -1,5 +1,6 @@
 #pragma once
-// A convex body against a static triangle mesh: the mesh's hierarchy gives
+// A convex body against level geometry (a triangle mesh or a heightfield,
+// triangle_source.h): the mesh's query gives
 // the triangles near the body, each is tested as a convex shape of its own
 // (sphere by closest point, every other shape by GJK/EPA), contacts on the
 // mesh's inactive edges take the face normal (triangle_mesh_collider.h),
@@ -15,7 +16,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine/colliders/triangle_mesh_collider.h"
+#include "engine/colliders/triangle_source.h"
 #include "engine/contacts/contact_manifold.h"
 #include "engine/contacts/manifold_builder.h"
 #include "engine/narrowphase/narrow_phase_options.h"
@@ -45,18 +46,19 @@ inline constexpr double meshMergeAngle = 1e-6;
 // by feature id). Points farther apart than `reach` are left out. Returns
 // the pair's deepest answer (its normal and points from a to b), Separated
 // with an infinite distance when no triangle is within reach.
-ContactResult collideWithMesh(const TriangleMeshCollider& mesh, const Transform& meshPose, const Collider& convex,
+ContactResult collideWithMesh(const TriangleSource& mesh, const Transform& meshPose, const Collider& convex,
                               const Transform& convexPose, bool meshIsA, std::uint32_t a, std::uint32_t b,
                               double reach, const NarrowPhaseOptions& options, MeshContactScratch& scratch,
                               std::vector<ContactManifold>& out, MeshContactCounts& counts);
 
-// One triangle of `mesh` (in the mesh's frame, placed by meshPose) against a
-// convex collider: the narrow phase's answer, normal from the triangle to the
-// convex shape. Where that answer is within `reach` and found on an inactive
-// edge or vertex, the face normal is substituted and the distance measured
-// along it to the face's plane. `corrected` (may be null) says whether it was.
-ContactResult collideWithTriangle(const TriangleMeshCollider& mesh, std::uint32_t triangle, const Transform& meshPose,
-                                  const Collider& convex, const Transform& convexPose,
-                                  const NarrowPhaseOptions& options, double reach, bool* corrected = nullptr);
+// One triangle of a mesh or heightfield (in its frame, placed by meshPose)
+// against a convex collider: the narrow phase's answer, normal from the
+// triangle to the convex shape. Where that answer is within `reach` and
+// found on an inactive edge or corner, the face normal is substituted and
+// the distance measured along it to the face's plane. `corrected` (may be
+// null) says whether it was.
+ContactResult collideWithTriangle(const SourceTriangle& triangle, const Transform& meshPose, const Collider& convex,
+                                  const Transform& convexPose, const NarrowPhaseOptions& options, double reach,
+                                  bool* corrected = nullptr);
 
 }  // namespace physdbg

@@ -54,7 +54,7 @@ TEST(MeshContacts, SphereOverTheFace) {
   SphereCollider sphere(0.5);
   const Transform at{triangle.world(Vec3(1, 0.4, 1)), Quat::Identity()};
   const ContactResult result =
-      collideWithTriangle(*triangle.mesh, 0, triangle.pose, sphere, at, NarrowPhaseOptions{}, 1.0);
+      collideWithTriangle(triangle.mesh->triangleAt(0), triangle.pose, sphere, at, NarrowPhaseOptions{}, 1.0);
   EXPECT_NEAR(signedDistance(result), -0.1, exact);
   EXPECT_LT((result.normal - triangle.direction(Vec3::UnitY())).norm(), exact);
   EXPECT_LT((result.pointA - triangle.world(Vec3(1, 0, 1))).norm(), exact);
@@ -67,7 +67,7 @@ TEST(MeshContacts, SphereBesideABorderEdgeTakesTheEdgesNormal) {
   const Transform at{triangle.world(Vec3(-0.3, 0.3, 2)), Quat::Identity()};
   bool corrected = true;
   const ContactResult result =
-      collideWithTriangle(*triangle.mesh, 0, triangle.pose, sphere, at, NarrowPhaseOptions{}, 1.0, &corrected);
+      collideWithTriangle(triangle.mesh->triangleAt(0), triangle.pose, sphere, at, NarrowPhaseOptions{}, 1.0, &corrected);
   EXPECT_FALSE(corrected);
   EXPECT_NEAR(signedDistance(result), std::sqrt(0.18) - 0.5, exact);
   EXPECT_LT((result.normal - triangle.direction(Vec3(-1, 1, 0).normalized())).norm(), exact);
@@ -80,7 +80,7 @@ TEST(MeshContacts, SphereBeyondACornerTakesTheCornersNormal) {
   const Vec3 offset(0.3, 0.3, -0.2);  // from corner (4, 0, 0), in its region past both edges
   const Transform at{triangle.world(Vec3(4, 0, 0) + offset), Quat::Identity()};
   const ContactResult result =
-      collideWithTriangle(*triangle.mesh, 0, triangle.pose, sphere, at, NarrowPhaseOptions{}, 1.0);
+      collideWithTriangle(triangle.mesh->triangleAt(0), triangle.pose, sphere, at, NarrowPhaseOptions{}, 1.0);
   EXPECT_NEAR(signedDistance(result), offset.norm() - 1.0, exact);
   EXPECT_LT((result.normal - triangle.direction(offset.normalized())).norm(), exact);
 }
