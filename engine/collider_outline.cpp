@@ -8,6 +8,7 @@
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/convex_mesh_collider.h"
+#include "engine/colliders/heightfield_collider.h"
 #include "engine/colliders/sphere_collider.h"
 #include "engine/colliders/triangle_mesh_collider.h"
 
@@ -106,10 +107,10 @@ Outline hullOutline(const ConvexMeshCollider& hull) {
 // A mesh need not be closed nor consistently wound, so the hull's trick of
 // keeping one walk per edge does not hold: its edges are sorted and each is
 // drawn once.
-Outline meshOutline(const TriangleMeshCollider& mesh) {
+Outline meshOutline(const std::vector<Vec3>& vertices, const std::vector<MeshTriangle>& triangles) {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
-  edges.reserve(3 * mesh.triangles().size());
-  for (const MeshTriangle& triangle : mesh.triangles())
+  edges.reserve(3 * triangles.size());
+  for (const MeshTriangle& triangle : triangles)
     for (int e = 0; e < 3; ++e) {
       const std::uint32_t p = triangle[e], q = triangle[(e + 1) % 3];
       edges.emplace_back(std::min(p, q), std::max(p, q));
@@ -118,7 +119,7 @@ Outline meshOutline(const TriangleMeshCollider& mesh) {
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   Outline outline;
   outline.reserve(edges.size());
-  for (const auto& [p, q] : edges) outline.push_back({mesh.vertices()[p], mesh.vertices()[q]});
+  for (const auto& [p, q] : edges) outline.push_back({vertices[p], vertices[q]});
   return outline;
 }
 
@@ -136,8 +137,16 @@ std::vector<OutlineSegment> localOutline(const Collider& collider) {
       return boxOutline(static_cast<const BoxCollider&>(collider).halfExtents());
     case ColliderKind::ConvexMesh:
       return hullOutline(static_cast<const ConvexMeshCollider&>(collider));
-    case ColliderKind::TriangleMesh:
-      return meshOutline(static_cast<const TriangleMeshCollider&>(collider));
+    case ColliderKind::TriangleMesh: {
+      const auto& mesh = static_cast<const TriangleMeshCollider&>(collider);
+      return meshOutline(mesh.vertices(), mesh.triangles());
+    }
+    case ColliderKind::Heightfield: {
+      std::vector<Vec3> vertices;
+      std::vector<MeshTriangle> triangles;
+      static_cast<const HeightfieldCollider&>(collider).sampledGrid(heightfieldDrawnCells, vertices, triangles);
+      return meshOutline(vertices, triangles);
+    }
     case ColliderKind::Triangle: {
       const auto& corners = static_cast<const TriangleCollider&>(collider).corners();
       return {{corners[0], corners[1]}, {corners[1], corners[2]}, {corners[2], corners[0]}};

@@ -5,7 +5,8 @@
 // body (so rotation shows), a capsule its end circles, side lines and cap
 // arcs (its silhouette from any side), a box its twelve edges, a convex hull
 // the edges of its merged faces (no triangle diagonals inside a flat face),
-// a triangle mesh every edge of its triangles once.
+// a triangle mesh every edge of its triangles once, a heightfield its cells'
+// edges and diagonals (sampled: at most heightfieldDrawnCells cells a side).
 //
 // Nothing is cached per collider: the only search a hull would need (drawing
 // each edge once) is avoided by the hull's winding, so the work per frame is
@@ -21,6 +22,9 @@ namespace physdbg {
 // Segments per full circle. At 1280x720 a sphere filling the view's height
 // strays from a true circle by under 2 px; a sphere costs 3 x 40 lines.
 inline constexpr int outlineCircleSegments = 40;
+// A 1000 x 1000 field is 3 million lines; 256 a side (200,000) draws in tens
+// of ms and shows the terrain's shape, every fourth sample of such a field.
+inline constexpr int heightfieldDrawnCells = 256;
 
 struct OutlineSegment {
   Vec3 from, to;

@@ -19,6 +19,8 @@ inline constexpr std::size_t maxMeshVertices = 10'000'000;
 inline constexpr std::size_t maxMeshTriangles = 10'000'000;
 inline constexpr std::uintmax_t maxMeshFileBytes = std::uintmax_t{1} << 30;  // a mesh file Assimp reads
 inline constexpr std::size_t maxMeshNodes = 10'000;  // names in a mesh's "nodes"
+// Samples of one heightfield: 8192 x 8192, 256 MiB at 4 bytes a sample.
+inline constexpr std::uint64_t maxHeightfieldSamples = 8192ull * 8192ull;
 inline constexpr long long maxSteps = 10'000'000;
 inline constexpr std::size_t maxForces = 10'000;  // "forces" entries: each is looked at every step
 inline constexpr std::size_t maxStates = 10'000;  // "set" entries: each is looked at every step

@@ -13,9 +13,11 @@
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/convex_mesh_collider.h"
+#include "engine/colliders/heightfield_collider.h"
 #include "engine/colliders/sphere_collider.h"
 #include "engine/colliders/triangle_mesh_collider.h"
 #include "debugdraw/primitives.h"
+#include "scenes/heightfield_image.h"
 #include "scenes/json_reader.h"
 #include "scenes/mesh_import.h"
 #include "scenes/scene.h"
@@ -149,11 +151,65 @@ std::shared_ptr<const Collider> readMesh(const JsonReader& reader, const json& p
   }
 }
 
+// {"samples": [[h, ...], ...] or "file": "terrain.png", "spacing": [dx, dz],
+// "scale": s}: rows along z, columns along x; see scenes/README.md.
+std::shared_ptr<const Collider> readHeightfield(const JsonReader& reader, const json& parameters,
+                                                const std::string& path) {
+  reader.requireObject(parameters, path);
+  reader.checkKeys(parameters, path, {"samples", "file", "spacing", "scale", "active_edge_degrees"});
+  if (parameters.contains("samples") == parameters.contains("file"))
+    reader.fail(path, "needs samples or file (one of them)");
+  std::vector<float> heights;
+  int columns = 0, rows = 0;
+  if (parameters.contains("file")) {
+    const std::filesystem::path named = reader.string(parameters["file"], path + ".file");
+    const std::filesystem::path file =
+        named.is_absolute() ? named : std::filesystem::path(reader.source()).parent_path() / named;
+    try {
+      HeightfieldImage image = readHeightfieldImage(file.string(), limits::maxHeightfieldSamples);
+      heights = std::move(image.heights);
+      columns = image.columns;
+      rows = image.rows;
+    } catch (const HeightfieldImageError& error) {
+      reader.fail(path + ".file", "'" + file.string() + "': " + error.what());
+    }
+  } else {
+    const json& list = reader.array(parameters["samples"], path + ".samples", 0);
+    rows = static_cast<int>(std::min<std::size_t>(list.size(), limits::maxHeightfieldSamples + 1));
+    if (list.size() < 2) reader.fail(path + ".samples", "needs at least 2 rows");
+    const json& first = reader.array(list[0], path + ".samples[0]", 0);
+    columns = static_cast<int>(std::min<std::size_t>(first.size(), limits::maxHeightfieldSamples + 1));
+    if (static_cast<std::uint64_t>(rows) * static_cast<std::uint64_t>(columns) > limits::maxHeightfieldSamples)
+      reader.fail(path + ".samples", "has " + std::to_string(list.size()) + " x " + std::to_string(first.size()) +
+                                         " samples (at most " + std::to_string(limits::maxHeightfieldSamples) + ")");
+    heights.reserve(static_cast<std::size_t>(rows) * columns);
+    for (int row = 0; row < rows; ++row) {
+      const std::string here = path + ".samples[" + std::to_string(row) + "]";
+      const json& samples = reader.array(list[static_cast<std::size_t>(row)], here, static_cast<std::size_t>(columns));
+      for (int column = 0; column < columns; ++column)
+        heights.push_back(static_cast<float>(reader.number(samples[static_cast<std::size_t>(column)],
+                                                           here + "[" + std::to_string(column) + "]")));
+    }
+  }
+  const json& spacingValue = reader.required(parameters, path, "spacing");
+  const json& spacing = reader.array(spacingValue, path + ".spacing", 2);
+  const double dx = reader.size(spacing[0], path + ".spacing[0]"), dz = reader.size(spacing[1], path + ".spacing[1]");
+  const double scale = parameters.contains("scale") ? reader.size(parameters["scale"], path + ".scale") : 1.0;
+  double degrees = TriangleMeshCollider::defaultActiveEdgeDegrees;
+  if (parameters.contains("active_edge_degrees"))
+    degrees = reader.inRange(parameters["active_edge_degrees"], path + ".active_edge_degrees", 0.0, 180.0);
+  try {
+    return std::make_shared<HeightfieldCollider>(std::move(heights), columns, rows, dx, dz, scale, degrees);
+  } catch (const std::invalid_argument& error) {
+    reader.fail(path, error.what());
+  }
+}
+
 std::shared_ptr<const Collider> readShape(const JsonReader& reader, const json& value, const std::string& path,
                                           std::vector<std::string>& notes) {
   reader.requireObject(value, path);
   if (value.size() != 1)
-    reader.fail(path, "must have exactly one key naming the shape (sphere, box, capsule, convex, mesh)");
+    reader.fail(path, "must have exactly one key naming the shape (sphere, box, capsule, convex, mesh, heightfield)");
   // Keep the iterator itself: key() and value() refer into the object, not into a temporary.
   const auto entry = value.begin();
   const std::string& kind = entry.key();
@@ -180,7 +236,8 @@ std::shared_ptr<const Collider> readShape(const JsonReader& reader, const json& 
   }
   if (kind == "convex") return readConvex(reader, parameters, here);
   if (kind == "mesh") return readMesh(reader, parameters, here, notes);
-  reader.fail(path, "unknown shape '" + excerpt(kind) + "' (known: sphere, box, capsule, convex, mesh)");
+  if (kind == "heightfield") return readHeightfield(reader, parameters, here);
+  reader.fail(path, "unknown shape '" + excerpt(kind) + "' (known: sphere, box, capsule, convex, mesh, heightfield)");
 }
 
 void readBodyKeys(const JsonReader& reader, const json& value, const std::string& path, BodyDefinition& body) {
@@ -354,9 +411,12 @@ void readBody(const JsonReader& reader, const json& value, std::size_t entry, Sc
   BodyDefinition body;
   body.collider = readShape(reader, reader.required(value, path, "shape"), path + ".shape", scene.notes);
   readBodyKeys(reader, value, path, body);
-  if (body.collider->kind() == ColliderKind::TriangleMesh && !body.isStatic && !body.isKinematic)
-    reader.fail(path + ".shape.mesh", "a triangle mesh has no volume and no inside, so it cannot be dynamic: "
-                                      "give the body \"static\": true or \"kinematic\": true");
+  const ColliderKind kind = body.collider->kind();
+  if ((kind == ColliderKind::TriangleMesh || kind == ColliderKind::Heightfield) && !body.isStatic && !body.isKinematic)
+    reader.fail(path + ".shape." + colliderKindName(kind),
+                std::string("a ") + colliderKindName(kind) +
+                    " has no volume and no inside, so it cannot be dynamic: give the body \"static\": true or "
+                    "\"kinematic\": true");
   readMassKeys(reader, value, path, body);
   body = aboutCentreOfMass(body);  // the scene states the body where its centre of mass is
   const std::string name = value.contains("name") ? readBodyName(reader, value["name"], path + ".name") : "";

@@ -10,6 +10,7 @@ const char* colliderKindName(ColliderKind kind) {
     case ColliderKind::ConvexMesh: return "convex";
     case ColliderKind::Triangle: return "triangle";
     case ColliderKind::TriangleMesh: return "mesh";
+    case ColliderKind::Heightfield: return "heightfield";
   }
   return "unknown";
 }

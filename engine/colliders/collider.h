@@ -8,11 +8,11 @@
 
 namespace physdbg {
 
-// Triangle is one triangle of a TriangleMesh, made by the narrow phase for a
-// test; TriangleMesh is the static mesh itself, which only static and
-// kinematic bodies hold and which has no support function worth calling
-// (its localSupport scans every vertex).
-enum class ColliderKind { Sphere, Box, Capsule, ConvexMesh, Triangle, TriangleMesh };
+// Triangle is one triangle of a TriangleMesh or Heightfield, made by the
+// narrow phase for a test; TriangleMesh and Heightfield are level geometry,
+// which only static and kinematic bodies hold and which has no support
+// function worth calling (their localSupport scans every vertex).
+enum class ColliderKind { Sphere, Box, Capsule, ConvexMesh, Triangle, TriangleMesh, Heightfield };
 
 const char* colliderKindName(ColliderKind kind);
 

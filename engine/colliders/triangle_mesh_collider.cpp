@@ -130,14 +130,3 @@ Vec3 TriangleMeshCollider::localSupport(const Vec3& direction) const {
 }
 
 }  // namespace physdbg
-
-namespace physdbg {
-
-const TriangleSource* triangleSourceOf(const Collider& collider) {
-  switch (collider.kind()) {
-    case ColliderKind::TriangleMesh: return &static_cast<const TriangleMeshCollider&>(collider);
-    default: return nullptr;
-  }
-}
-
-}  // namespace physdbg

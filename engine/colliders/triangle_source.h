@@ -24,7 +24,9 @@ struct SourceTriangle {
 class TriangleSource {
  public:
   virtual ~TriangleSource() = default;
-  // Appends the triangles whose boxes overlap `box` (source frame), ascending.
+  // Appends, ascending, every triangle whose box overlaps `box` (source
+  // frame), and perhaps a few near ones (a heightfield adds a cell's two
+  // triangles together): the contact code tests each.
   virtual void query(const Aabb& box, std::vector<std::uint32_t>& out) const = 0;
   virtual SourceTriangle triangleAt(std::uint32_t triangle) const = 0;
 };

@@ -90,6 +90,7 @@ void findSupportingFeature(const Collider& collider, const Transform& transform,
       return;
     case ColliderKind::Sphere:
     case ColliderKind::TriangleMesh:  // met one triangle at a time (mesh_contacts.h); a point if asked
+    case ColliderKind::Heightfield:
       feature.points.assign(1, collider.support(transform, direction));
       feature.index = 0;
       return;

@@ -12,6 +12,7 @@
 #include "engine/colliders/box_collider.h"
 #include "engine/colliders/capsule_collider.h"
 #include "engine/colliders/convex_mesh_collider.h"
+#include "engine/colliders/heightfield_collider.h"
 #include "engine/colliders/sphere_collider.h"
 #include "engine/colliders/triangle_mesh_collider.h"
 #include "engine/world.h"
@@ -50,15 +51,29 @@ std::shared_ptr<const dd::TriangleMesh> hullMesh(const ConvexMeshCollider& hull,
   return mesh;
 }
 
-std::shared_ptr<const dd::TriangleMesh> levelMesh(const TriangleMeshCollider& level, std::uint64_t id) {
+std::shared_ptr<const dd::TriangleMesh> levelMesh(const std::vector<Vec3>& vertices,
+                                                  const std::vector<MeshTriangle>& triangles, std::uint64_t id) {
   auto mesh = std::make_shared<dd::TriangleMesh>();
   mesh->id = id;
-  mesh->vertices.reserve(level.vertices().size());
-  for (const Vec3& vertex : level.vertices()) mesh->vertices.push_back(vertex.cast<float>());
-  mesh->indices.reserve(3 * level.triangles().size());
-  for (const MeshTriangle& triangle : level.triangles())
+  mesh->vertices.reserve(vertices.size());
+  for (const Vec3& vertex : vertices) mesh->vertices.push_back(vertex.cast<float>());
+  mesh->indices.reserve(3 * triangles.size());
+  for (const MeshTriangle& triangle : triangles)
     for (const std::uint32_t corner : triangle) mesh->indices.push_back(corner);
   return mesh;
+}
+
+// Level geometry as a drawing mesh; a big heightfield sampled
+// (heightfieldDrawnCells, collider_outline.h).
+std::shared_ptr<const dd::TriangleMesh> levelMesh(const Collider& level, std::uint64_t id) {
+  if (level.kind() == ColliderKind::TriangleMesh) {
+    const auto& mesh = static_cast<const TriangleMeshCollider&>(level);
+    return levelMesh(mesh.vertices(), mesh.triangles(), id);
+  }
+  std::vector<Vec3> vertices;
+  std::vector<MeshTriangle> triangles;
+  static_cast<const HeightfieldCollider&>(level).sampledGrid(heightfieldDrawnCells, vertices, triangles);
+  return levelMesh(vertices, triangles, id);
 }
 
 void emitShape(const RigidBody& body, dd::Color color, const std::shared_ptr<const dd::TriangleMesh>& mesh,
@@ -80,6 +95,7 @@ void emitShape(const RigidBody& body, dd::Color color, const std::shared_ptr<con
     }
     case ColliderKind::ConvexMesh:
     case ColliderKind::TriangleMesh:
+    case ColliderKind::Heightfield:
       if (mesh) frame.meshes.push_back({body.position(), body.orientation(), mesh, color});
       break;
     case ColliderKind::Triangle: break;  // made only inside the narrow phase
@@ -248,13 +264,14 @@ std::vector<std::shared_ptr<const dd::TriangleMesh>> hullMeshes(const std::vecto
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const Collider* collider = &bodies[i].collider();
     const ColliderKind kind = collider->kind();
-    if (kind != ColliderKind::ConvexMesh && kind != ColliderKind::TriangleMesh) continue;
+    if (kind != ColliderKind::ConvexMesh && kind != ColliderKind::TriangleMesh && kind != ColliderKind::Heightfield)
+      continue;
     for (std::size_t j = 0; j < i && !meshes[i]; ++j) {
       if (&bodies[j].collider() == collider) meshes[i] = meshes[j];
     }
     if (meshes[i]) continue;
     meshes[i] = kind == ColliderKind::ConvexMesh ? hullMesh(static_cast<const ConvexMeshCollider&>(*collider), i + 1)
-                                                 : levelMesh(static_cast<const TriangleMeshCollider&>(*collider), i + 1);
+                                                 : levelMesh(*collider, i + 1);
   }
   return meshes;
 }

@@ -134,7 +134,8 @@ RigidBody::RigidBody(const BodyDefinition& definition)
   if (definition.localInertia && !isDynamic())
     throw std::invalid_argument("a static or kinematic body has no inertia: nothing turns it");
   const ColliderKind kind = collider_->kind();
-  if (isDynamic() && (kind == ColliderKind::TriangleMesh || kind == ColliderKind::Triangle))
+  if (isDynamic() &&
+      (kind == ColliderKind::TriangleMesh || kind == ColliderKind::Heightfield || kind == ColliderKind::Triangle))
     throw std::invalid_argument(std::string("a ") + colliderKindName(kind) +
                                 " has no volume and no inside: only a static or kinematic body can hold one");
   if (!isDynamic()) {  // infinite mass: nothing pushes it

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "engine/colliders/heightfield_collider.h"
 #include "engine/colliders/triangle_mesh_collider.h"
 #include "engine/world.h"
 #include "scenes/scene.h"
@@ -70,6 +71,43 @@ TEST(MeshScene, DegenerateTrianglesAreDroppedWithANote) {
   EXPECT_NE(scene.notes[0].find("level.json"), std::string::npos) << scene.notes[0];
   EXPECT_NE(scene.notes[0].find("bodies[0].shape.mesh"), std::string::npos) << scene.notes[0];
   EXPECT_NE(scene.notes[0].find("dropped 2 degenerate triangles"), std::string::npos) << scene.notes[0];
+}
+
+TEST(MeshScene, HeightfieldsFromSamplesAndFromA16BitPng) {
+  const SceneDescription inline_ = parseScene(
+      R"({"bodies": [{"shape": {"heightfield": {"samples": [[0, 1, 2], [1, 2, 3]], "spacing": [0.5, 2], "scale": 3}},
+          "static": true}]})",
+      "terrain.json");
+  ASSERT_EQ(inline_.bodies[0].collider->kind(), ColliderKind::Heightfield);
+  const auto& small = static_cast<const HeightfieldCollider&>(*inline_.bodies[0].collider);
+  EXPECT_EQ(small.columns(), 3);
+  EXPECT_EQ(small.rows(), 2);
+  EXPECT_EQ(small.samplePoint(2, 1), Vec3(0.5, 9.0, 1.0));
+  const SceneDescription hills = loadSceneFile(std::string(PHYSDBG_SOURCE_DIR) + "/scenes/terrain.json");
+  const auto& field = static_cast<const HeightfieldCollider&>(*hills.bodies[0].collider);
+  EXPECT_EQ(field.columns(), 65);
+  EXPECT_EQ(field.rows(), 65);
+  EXPECT_GT(field.localBounds().max.y() - field.localBounds().min.y(), 1.0);
+}
+
+TEST(MeshScene, BadHeightfieldsNameTheKey) {
+  const auto field = [](const std::string& parameters, const std::string& rest = R"(, "static": true)") {
+    return R"({"bodies": [{"shape": {"heightfield": {)" + parameters + "}}" + rest + "}]}";
+  };
+  EXPECT_NE(errorOf(field(R"("samples": [[0, 1], [1]], "spacing": [1, 1])")).find("heightfield.samples[1]"),
+            std::string::npos);
+  EXPECT_NE(errorOf(field(R"("samples": [[0, 1]], "spacing": [1, 1])")).find("2 rows"), std::string::npos);
+  EXPECT_NE(errorOf(field(R"("samples": [[0, 1], [1, 2]], "spacing": [1, 0])")).find("spacing[1]"),
+            std::string::npos);
+  EXPECT_NE(errorOf(field(R"("samples": [[0, 1], [1, 2]])")).find("spacing"), std::string::npos);
+  EXPECT_NE(errorOf(field(R"("spacing": [1, 1])")).find("samples or file"), std::string::npos);
+  EXPECT_NE(errorOf(field(R"("samples": [[0, 1], [1, 2]], "spacing": [1, 1])", "")).find("cannot be dynamic"),
+            std::string::npos);
+  const std::string eightBit = std::string(PHYSDBG_SOURCE_DIR) + "/tests/golden/mesa-22.3.6-llvmpipe/default_shapes_wire_overlay.png";
+  EXPECT_NE(errorOf(field(R"("file": ")" + eightBit + R"(", "spacing": [1, 1])")).find("16-bit grayscale"),
+            std::string::npos);
+  EXPECT_NE(errorOf(field(R"("file": "nowhere.png", "spacing": [1, 1])")).find("heightfield.file"),
+            std::string::npos);
 }
 
 }  // namespace
