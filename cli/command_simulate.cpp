@@ -161,6 +161,8 @@ int runSimulate(const std::vector<std::string>& args) {
       stats.awakeBodies, stats.lockedBodies, stats.sleepingBodies, stats.candidatePairs, stats.contacts,
       stats.manifoldPoints, stats.largestPenetration, stats.narrowPhase.fastPath, stats.narrowPhase.boxBox,
       stats.narrowPhase.gjk, stats.narrowPhase.epa, stats.narrowPhase.reused);
+  if (stats.filteredPairs > 0)
+    std::printf("filters: %d pairs kept apart before the narrow phase\n", stats.filteredPairs);
   if (stats.narrowPhase.meshTriangles > 0)
     std::printf("meshes: %lld triangles tested, %lld contacts on inactive edges given the face normal\n",
                 stats.narrowPhase.meshTriangles, stats.narrowPhase.meshCorrected);

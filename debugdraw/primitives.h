@@ -35,6 +35,8 @@ inline constexpr Color tightBox{0.85f, 0.85f, 0.85f, 1.0f};    // collider box, 
 inline constexpr Color contactPoint{1.0f, 0.9f, 0.1f, 1.0f};   // contact points: yellow
 inline constexpr Color contactNormal{1.0f, 0.5f, 0.0f, 1.0f};  // contact normals: orange
 inline constexpr Color staticBody{0.55f, 0.55f, 0.58f, 1.0f};
+inline constexpr Color sensorOverlap{0.2f, 0.95f, 0.95f, 1.0f};  // a sensor overlapping a body: cyan
+inline constexpr float sensorAlpha = 0.35f;  // sensors' solids are see-through: they push nothing
 }  // namespace colors
 
 // Bit flags naming what a frame should contain. A producer computes nothing

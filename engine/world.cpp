@@ -127,6 +127,10 @@ void World::findContacts(const StepContext& context) {
   {
     const StageTimer timer(profile.pairs);
     broadPhase_->findPairs(pairs_);
+    if (filtersInUse_)
+      stats_.filteredPairs += static_cast<int>(std::erase_if(pairs_, [this](const BodyPair& pair) {
+        return !bodies_[pair.a].filter().allows(bodies_[pair.b].filter());
+      }));
   }
   stats_.broadPhase = broadPhase_->stats();
   stats_.candidatePairs = static_cast<int>(pairs_.size());

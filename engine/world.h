@@ -216,6 +216,7 @@ class World {
   ContactEventTracker events_;
   ContactHistory history_;
   bool keepHistory_ = false;
+  bool filtersInUse_ = false;  // a body was added with a collision filter other than the default
   std::vector<ShownContact> resting_;  // sorted; what sleeping bodies rest on
   ContactListener* listener_ = nullptr;
   std::vector<ScheduledForce> scheduledForces_;

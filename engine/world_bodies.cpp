@@ -21,6 +21,7 @@ BodyId World::addBody(const BodyDefinition& definition) {
   bodies_.emplace_back(aboutCentreOfMass(definition));
   const auto id = static_cast<BodyId>(bodies_.size() - 1);
   const RigidBody& body = bodies_.back();
+  filtersInUse_ = filtersInUse_ || !body.filter().isDefault();
   // A still kinematic body never moves its proxy; one with a velocity does
   // every step, like an awake dynamic body.
   proxies_.push_back(broadPhase_->addProxy(body.collider().worldBounds(body.transform()), id,

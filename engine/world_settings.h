@@ -66,7 +66,8 @@ struct StepStats {
   int awakeBodies = 0;
   int sleepingBodies = 0;
   int lockedBodies = 0;  // awake bodies with an axis lock: the only ones that do lock work
-  int candidatePairs = 0;
+  int candidatePairs = 0;  // after the collision filters
+  int filteredPairs = 0;   // pairs the broad phase found that the bodies' filters keep apart
   int boundsRejected = 0;  // candidate pairs whose tight boxes were too far apart for the narrow phase
   int staticPairsTested = 0;
   int contacts = 0;

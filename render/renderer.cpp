@@ -205,22 +205,54 @@ class Renderer::Impl {
     for (std::size_t level = 0; level < levels.size(); ++level) drawInstances(spheres_[level], levels[level]);
   }
 
+  // Translucent solids (sensors) go after the opaque ones, without writing
+  // depth: drawn first, a see-through box would hide what is inside it.
   void drawSolids(const FrameBatches& batches, const Camera& camera, const Eigen::Matrix4f& viewProjection) {
     const Eigen::Vector3f light = lightDirection(camera);
     // Pushed back slightly so wire boxes and lines on their surfaces stay visible.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
-    // Every solid mesh is closed and counter-clockwise from outside (flat boxes
-    // keep both faces), so back faces never show: skipping them halves the fill.
-    glEnable(GL_CULL_FACE);
     useProgram(solid_, viewProjection);
     glUniform3fv(glGetUniformLocation(solid_.get(), "uLightDirection"), 1, light.data());
-    drawInstances(cube_, batches.boxes);
-    drawRound(batches.spheres, camera);
-    drawRound(batches.capsules, camera);
-    for (const MeshBatch& batch : batches.meshes) drawInstances(meshCache_.get(*batch.mesh), batch.instances);
-    glDisable(GL_CULL_FACE);
+    drawSolidPass(batches, camera, false);
+    if (hasTranslucentSolids(batches)) {
+      glDepthMask(GL_FALSE);
+      drawSolidPass(batches, camera, true);
+      glDepthMask(GL_TRUE);
+    }
     glDisable(GL_POLYGON_OFFSET_FILL);
+  }
+
+  static bool translucent(const Instance& instance) { return instance.color[3] < 1.0f; }
+
+  static bool hasTranslucentSolids(const FrameBatches& batches) {
+    const auto any = [](const std::vector<Instance>& instances) {
+      return std::any_of(instances.begin(), instances.end(), translucent);
+    };
+    if (any(batches.boxes) || any(batches.spheres) || any(batches.capsules)) return true;
+    return std::any_of(batches.meshes.begin(), batches.meshes.end(),
+                       [&](const MeshBatch& batch) { return any(batch.instances); });
+  }
+
+  static std::vector<Instance> select(const std::vector<Instance>& instances, bool wantTranslucent) {
+    std::vector<Instance> chosen;
+    for (const Instance& instance : instances)
+      if (translucent(instance) == wantTranslucent) chosen.push_back(instance);
+    return chosen;
+  }
+
+  void drawSolidPass(const FrameBatches& batches, const Camera& camera, bool wantTranslucent) {
+    // Boxes, spheres and capsules are closed and counter-clockwise from
+    // outside (flat boxes keep both faces), so back faces never show:
+    // skipping them halves the fill. Meshes are not culled: level geometry
+    // (triangle meshes, heightfields) is an open surface, touched from either side.
+    glEnable(GL_CULL_FACE);
+    drawInstances(cube_, select(batches.boxes, wantTranslucent));
+    drawRound(select(batches.spheres, wantTranslucent), camera);
+    drawRound(select(batches.capsules, wantTranslucent), camera);
+    glDisable(GL_CULL_FACE);
+    for (const MeshBatch& batch : batches.meshes)
+      drawInstances(meshCache_.get(*batch.mesh), select(batch.instances, wantTranslucent));
   }
 
   void drawOverlays(const FrameBatches& batches, const Eigen::Matrix4f& viewProjection) {

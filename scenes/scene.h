@@ -55,6 +55,8 @@ struct SceneDescription {
   // What the loader did that the file did not say, for the user to read
   // (degenerate mesh triangles dropped): "file: key: what".
   std::vector<std::string> notes;
+  // "collision_layers": names of the filter bits, bit k named by entry k.
+  std::vector<std::string> collisionLayers;
 };
 
 // `sourceName` is used in error messages (usually the file path).

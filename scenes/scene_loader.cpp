@@ -400,6 +400,52 @@ std::optional<BodyLifetime> readLifetime(const JsonReader& reader, const json& v
   return lifetime;
 }
 
+// A filter's bits: a layer name, a list of names (declared in
+// "collision_layers"), or the bits as a whole number.
+std::uint32_t readLayerBits(const JsonReader& reader, const json& value, const std::string& path,
+                            const std::vector<std::string>& names) {
+  const auto bitOf = [&](const json& name, const std::string& where) {
+    const std::string text = reader.string(name, where);
+    const auto found = std::find(names.begin(), names.end(), text);
+    if (found == names.end())
+      reader.fail(where, "names layer '" + excerpt(text) + "', which \"collision_layers\" does not declare");
+    return 1u << static_cast<unsigned>(found - names.begin());
+  };
+  if (value.is_string()) return bitOf(value, path);
+  if (value.is_array()) {
+    const json& list = reader.array(value, path, 0);
+    if (list.size() > 32) reader.fail(path, "names more than 32 layers");
+    std::uint32_t bits = 0;
+    for (std::size_t i = 0; i < list.size(); ++i) bits |= bitOf(list[i], path + "[" + std::to_string(i) + "]");
+    return bits;
+  }
+  return static_cast<std::uint32_t>(reader.integer(value, path, 0, 0xFFFFFFFFll));
+}
+
+void readFilterKeys(const JsonReader& reader, const json& value, const std::string& path,
+                    const SceneDescription& scene, BodyDefinition& body) {
+  if (value.contains("layer"))
+    body.filter.layer = readLayerBits(reader, value["layer"], path + ".layer", scene.collisionLayers);
+  if (value.contains("collides_with"))
+    body.filter.collidesWith =
+        readLayerBits(reader, value["collides_with"], path + ".collides_with", scene.collisionLayers);
+  if (value.contains("sensor")) body.isSensor = reader.boolean(value["sensor"], path + ".sensor");
+}
+
+void readCollisionLayers(const JsonReader& reader, const json& value, SceneDescription& scene) {
+  const json& list = reader.array(value, "collision_layers", 0);
+  if (list.size() > 32) reader.fail("collision_layers", "declares " + std::to_string(list.size()) + " layers (at most 32, one a bit)");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string where = "collision_layers[" + std::to_string(i) + "]";
+    std::string name = reader.string(list[i], where);
+    if (name.empty() || name.size() > limits::maxBodyNameLength)
+      reader.fail(where, "must be 1 to " + std::to_string(limits::maxBodyNameLength) + " characters");
+    if (std::find(scene.collisionLayers.begin(), scene.collisionLayers.end(), name) != scene.collisionLayers.end())
+      reader.fail(where, "declares '" + excerpt(name) + "' twice");
+    scene.collisionLayers.push_back(std::move(name));
+  }
+}
+
 void readBody(const JsonReader& reader, const json& value, std::size_t entry, SceneDescription& scene) {
   const std::string path = "bodies[" + std::to_string(entry) + "]";
   reader.requireObject(value, path);
@@ -407,10 +453,11 @@ void readBody(const JsonReader& reader, const json& value, std::size_t entry, Sc
                    {"name", "shape", "position", "orientation", "velocity", "angular_velocity", "mass", "static",
                     "restitution", "static_friction", "dynamic_friction", "drag", "angular_drag", "use_gravity",
                     "lock_translation", "lock_rotation", "repeat", "kinematic", "add_at_step", "remove_at_step",
-                    "density", "inertia", "asleep"});
+                    "density", "inertia", "asleep", "layer", "collides_with", "sensor"});
   BodyDefinition body;
   body.collider = readShape(reader, reader.required(value, path, "shape"), path + ".shape", scene.notes);
   readBodyKeys(reader, value, path, body);
+  readFilterKeys(reader, value, path, scene, body);
   const ColliderKind kind = body.collider->kind();
   if ((kind == ColliderKind::TriangleMesh || kind == ColliderKind::Heightfield) && !body.isStatic && !body.isKinematic)
     reader.fail(path + ".shape." + colliderKindName(kind),
@@ -665,7 +712,7 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
       root, "",
       {"name", "description", "gravity", "dt", "steps", "bodies", "camera", "layers", "allow_sleep", "threads",
        "broadphase", "collision", "solver", "restitution_combine", "friction_combine", "forces", "set",
-       "time_of_impact"});
+       "time_of_impact", "collision_layers"});
   SceneDescription scene;
   scene.source = sourceName;
   scene.name = std::filesystem::path(sourceName).stem().string();
@@ -681,6 +728,7 @@ SceneDescription parseScene(const std::string& jsonText, const std::string& sour
       reader.fail("layers", error.what());  // parseLayers quotes only a short piece
     }
   }
+  if (root.contains("collision_layers")) readCollisionLayers(reader, root["collision_layers"], scene);
   const json& bodies = reader.array(reader.required(root, "", "bodies"), "bodies", 0);
   for (std::size_t i = 0; i < bodies.size(); ++i) readBody(reader, bodies[i], i, scene);
   if (root.contains("forces"))

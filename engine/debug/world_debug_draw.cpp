@@ -141,6 +141,20 @@ void emitShownContacts(const std::vector<ShownContact>& points, double scale, dd
   }
 }
 
+// Each overlap of a sensor this step, as a cyan dot between the two
+// surfaces: a sensor has no manifold (it pushes nothing), so the dots of
+// emitShownContacts never show it.
+template <typename Emit>
+void emitSensorOverlaps(const World& world, const Emit& emit, dd::Frame& frame) {
+  for (const Contact& contact : world.contacts()) {
+    if (!world.bodies()[contact.a].isSensor() && !world.bodies()[contact.b].isSensor()) continue;
+    emit(dd::tagOf(dd::Layer::Contacts, static_cast<int>(contact.a), static_cast<int>(contact.b)), [&] {
+      const Vec3 middle = 0.5 * (contact.result.pointA + contact.result.pointB);
+      frame.points.push_back({middle, 9.0f, dd::colors::sensorOverlap, {}});
+    });
+  }
+}
+
 // Per body: 0 no contact since the last frame, 1 only contacts it rests on
 // asleep, 2 a contact while awake. The aabbs layer colours boxes by it.
 std::vector<int> contactStates(const std::vector<ShownContact>& points, std::size_t bodyCount) {
@@ -305,7 +319,8 @@ void emitDebugDraw(const World& world, dd::LayerSet layers, dd::Frame& frame, dd
     if (!body.isStatic()) typicalSize = std::max(typicalSize, box.halfExtents().maxCoeff());
     const auto tagOfBody = [i](dd::Layer layer) { return dd::tagOf(layer, static_cast<int>(i)); };
     if (layers.has(dd::Layer::Shapes)) {
-      const dd::Color color = body.isStatic() ? dd::colors::staticBody : bodyColor(i);
+      dd::Color color = body.isStatic() ? dd::colors::staticBody : bodyColor(i);
+      if (body.isSensor()) color.a = dd::colors::sensorAlpha;
       emit(tagOfBody(dd::Layer::Shapes), [&] { emitShape(body, color, meshes[i], frame); });
     }
     if (layers.has(dd::Layer::Wire)) emit(tagOfBody(dd::Layer::Wire), [&] { emitWire(body, frame); });
@@ -343,8 +358,10 @@ void emitDebugDraw(const World& world, dd::LayerSet layers, dd::Frame& frame, dd
       options.leaves = false;  // the fat boxes are the `fat` layer
       drawTree(*broadPhaseTree, options, frame);
     });
-  if (layers.has(dd::Layer::Contacts))
+  if (layers.has(dd::Layer::Contacts)) {
     emit(dd::tagOf(dd::Layer::Contacts), [&] { emitShownContacts(shown, std::max(typicalSize, 0.2), frame); });
+    emitSensorOverlaps(world, emit, frame);
+  }
   if (layers.has(dd::Layer::Impulses))
     emit(dd::tagOf(dd::Layer::Impulses), [&] { emitImpulses(shown, world.settings().dt, impulseScale(world), frame); });
   if (layers.has(dd::Layer::Pairs))

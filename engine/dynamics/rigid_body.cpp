@@ -122,7 +122,9 @@ RigidBody::RigidBody(const BodyDefinition& definition)
       angularDrag_(definition.angularDrag),
       material_(definition.material),
       lockTranslation_(definition.lockTranslation),
-      lockRotation_(definition.lockRotation) {
+      lockRotation_(definition.lockRotation),
+      isSensor_(definition.isSensor),
+      filter_(definition.filter) {
   if (!collider_) throw std::invalid_argument("body has no collider");
   for (int axis = 0; axis < 3; ++axis) hasLocks_ = hasLocks_ || lockTranslation_[axis] || lockRotation_[axis];
   if (!isFinite(position_) || !isFinite(linearVelocity_) || !isFinite(angularVelocity_) || !isFinite(orientation_))

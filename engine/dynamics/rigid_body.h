@@ -9,6 +9,7 @@
 #include <string>
 
 #include "engine/colliders/collider.h"
+#include "engine/dynamics/collision_filter.h"
 #include "engine/dynamics/material.h"
 #include "engine/dynamics/motion.h"
 #include "engine/math.h"
@@ -44,6 +45,10 @@ struct BodyDefinition {
   // mass. Must pass inertiaTensorProblem. Dynamic bodies only. Last, so the
   // positional initialisers before it keep their meaning.
   std::optional<Mat3> localInertia;
+  CollisionFilter filter;
+  // A sensor (trigger volume) reports when it overlaps other bodies
+  // (contact events, the contacts layer) but never pushes or is pushed.
+  bool isSensor = false;
 };
 
 // A body turns about its centre of mass, which is its position. A convex
@@ -98,6 +103,8 @@ class RigidBody {
   const Mat3& localInertia() const { return localInertia_; }
   Mat3 worldInverseInertia() const;
   const Material& material() const { return material_; }
+  const CollisionFilter& filter() const { return filter_; }
+  bool isSensor() const { return isSensor_; }
   double linearDrag() const { return linearDrag_; }
   double angularDrag() const { return angularDrag_; }
   const std::array<bool, 3>& lockTranslation() const { return lockTranslation_; }
@@ -148,6 +155,8 @@ class RigidBody {
   Material material_;
   std::array<bool, 3> lockTranslation_, lockRotation_;
   bool hasLocks_ = false;
+  bool isSensor_ = false;
+  CollisionFilter filter_;
 
   Vec3 forceAccumulator_ = Vec3::Zero();         // N
   Vec3 accelerationAccumulator_ = Vec3::Zero();  // m/s^2

@@ -200,6 +200,7 @@ void ContactPass::castFastPairs(const StepContext& context) {
     const PairAnswer& answer = pairAnswers_[k];
     pairAnswers_[k].cast = -1;
     if (answer.kept || answer.mesh || answer.result.status != ContactStatus::Separated ||
+        bodies()[pair.a].isSensor() || bodies()[pair.b].isSensor() ||
         pairOutcomes_[nearPairs_[k]] == PairOutcome::Offloaded)
       continue;
     const double smallest = std::min(bodies()[pair.a].collider().localBounds().halfExtents().minCoeff(),
@@ -267,11 +268,16 @@ void ContactPass::gatherContacts(const StepContext& context) {
       continue;
     }
     const PairAnswer& test = pairAnswers_[k++];
-    if (test.mesh) {
-      gatherMeshPair(pairs()[i], test);
+    const BodyPair& pair = pairs()[i];
+    if (bodies()[pair.a].isSensor() || bodies()[pair.b].isSensor()) {
+      gatherSensorPair(pair, test);
       continue;
     }
-    const Contact contact{pairs()[i].a, pairs()[i].b, test.result};
+    if (test.mesh) {
+      gatherMeshPair(pair, test);
+      continue;
+    }
+    const Contact contact{pair.a, pair.b, test.result};
     if (test.kept)
       counts_.narrowPhase.addReused();
     else
@@ -289,6 +295,16 @@ void ContactPass::gatherContacts(const StepContext& context) {
     contacts_.push_back(contact);
   }
   counts_.manifoldPoints += solver_->addCandidates(candidates_, reaches_, bodies(), context, manifoldSources_);
+}
+
+// A sensor pushes nothing: its pair is a contact (for events and the
+// contacts layer) while the shapes overlap or touch, and never a candidate
+// for the solver. Speculative gaps do not count: a trigger fires on overlap.
+void ContactPass::gatherSensorPair(const BodyPair& pair, const PairAnswer& answer) {
+  if (answer.kept) counts_.narrowPhase.addReused();
+  else counts_.narrowPhase.add(answer.result);
+  if (answer.result.status == ContactStatus::Separated) return;
+  contacts_.push_back({pair.a, pair.b, answer.result});
 }
 
 // A mesh pair's manifolds go to the solver prebuilt, each as a candidate

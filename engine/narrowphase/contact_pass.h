@@ -106,6 +106,7 @@ class ContactPass {
   PairOutcome answerPair(const BodyPair& pair, const StepContext& context, PairAnswer& answer,
                          MeshContactScratch& scratch, MeshContactCounts& meshCounts) const;
   void gatherMeshPair(const BodyPair& pair, const PairAnswer& answer);
+  void gatherSensorPair(const BodyPair& pair, const PairAnswer& answer);
   void measureBodies(const StepContext& context);
   void testPairs(const StepContext& context);
   void testOffloadedPairs();

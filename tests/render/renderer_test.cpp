@@ -75,6 +75,40 @@ TEST_F(RendererTest, RedBoxIsLitInTheMiddleWithBackgroundCorners) {
     EXPECT_TRUE(isBackground(pixelAt(image, x, y))) << x << "," << y;
 }
 
+// A see-through solid (a sensor) drawn before what is inside it must not
+// hide it: the red box inside a large translucent grey box still shows red,
+// whichever comes first in the frame.
+TEST_F(RendererTest, TranslucentSolidsDoNotHideWhatIsInside) {
+  for (const bool translucentFirst : {true, false}) {
+    Frame frame;
+    const auto add = [&](bool outer) {
+      if (outer) frame.boxes.push_back({Vector3d::Zero(), Quaterniond::Identity(), Vector3d(3, 3, 3), {0.6f, 0.6f, 0.6f, 0.35f}});
+      else frame.boxes.push_back({Vector3d::Zero(), Quaterniond::Identity(), Vector3d(1, 1, 1), kRed});
+    };
+    add(translucentFirst);
+    add(!translucentFirst);
+    const Image image = renderer.render(frame, cameraFor(frame));
+    const Pixel centre = pixelAt(image, kWidth / 2, kHeight / 2);
+    EXPECT_GT(centre[0], centre[1] + 40) << translucentFirst;  // red shows through the grey
+    EXPECT_GT(centre[0], centre[2] + 40) << translucentFirst;
+  }
+}
+
+// Meshes are drawn from both sides: a level's floor seen from below is there.
+TEST_F(RendererTest, MeshesShowBothFaces) {
+  auto mesh = std::make_shared<debugdraw::TriangleMesh>();
+  mesh->id = 7;
+  mesh->vertices = {{-1, 0, -1}, {-1, 0, 1}, {1, 0, -1}, {1, 0, 1}};
+  mesh->indices = {0, 1, 2, 2, 1, 3};  // counter-clockwise from above
+  Frame frame;
+  frame.meshes.push_back({Vector3d::Zero(), Quaterniond::Identity(), mesh, kGreen});
+  Camera below;
+  below.eye = Vector3d(0.5, -3, 0.4);
+  below.target = Vector3d::Zero();
+  const Image image = renderer.render(frame, below);
+  EXPECT_FALSE(isBackground(pixelAt(image, kWidth / 2, kHeight / 2)));
+}
+
 TEST_F(RendererTest, VisibleBoxFacesHaveDistinctBrightness) {
   const Frame frame = oneBox(Vector3d::Zero(), Color{0.8f, 0.8f, 0.8f, 1.0f});
   const Camera camera = cameraFor(frame);  // looks down -x, -y, -z: sees +x, +y, +z faces

@@ -110,5 +110,35 @@ TEST(MeshScene, BadHeightfieldsNameTheKey) {
             std::string::npos);
 }
 
+TEST(FilterScene, LayersByNameListOrBitsAndSensors) {
+  const SceneDescription scene = parseScene(
+      R"({"collision_layers": ["ground", "debris", "player"], "bodies": [
+          {"shape": {"sphere": {"radius": 1}}, "layer": "debris", "collides_with": ["ground", "player"]},
+          {"shape": {"sphere": {"radius": 1}}, "layer": 6, "collides_with": 1, "sensor": true},
+          {"shape": {"sphere": {"radius": 1}}}]})",
+      "filters.json");
+  EXPECT_EQ(scene.bodies[0].filter.layer, 0b010u);
+  EXPECT_EQ(scene.bodies[0].filter.collidesWith, 0b101u);
+  EXPECT_EQ(scene.bodies[1].filter.layer, 6u);
+  EXPECT_EQ(scene.bodies[1].filter.collidesWith, 1u);
+  EXPECT_TRUE(scene.bodies[1].isSensor);
+  EXPECT_TRUE(scene.bodies[2].filter.isDefault());
+  EXPECT_FALSE(scene.bodies[2].isSensor);
+}
+
+TEST(FilterScene, BadLayersNameTheKey) {
+  EXPECT_NE(errorOf(R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "layer": "debris"}]})").find("bodies[0].layer"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"collision_layers": ["a"], "bodies": [{"shape": {"sphere": {"radius": 1}},
+                       "collides_with": ["a", "b"]}]})")
+                .find("collides_with[1]"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"collision_layers": ["a", "a"], "bodies": []})").find("twice"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "layer": -1}]})").find("layer"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"bodies": [{"shape": {"sphere": {"radius": 1}}, "sensor": 1}]})").find("sensor"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace physdbg
