@@ -21,7 +21,8 @@ const std::vector<std::pair<std::string, Layer>>& allLayers() {
       {"shapes", Layer::Shapes}, {"wire", Layer::Wire},         {"aabbs", Layer::Aabbs},
       {"fat", Layer::Fat},       {"tree", Layer::Tree},         {"contacts", Layer::Contacts},
       {"velocities", Layer::Velocities}, {"sleep", Layer::Sleep}, {"pairs", Layer::Pairs},
-      {"overlay", Layer::Overlay}, {"impulses", Layer::Impulses}, {"grid", Layer::Grid}};
+      {"overlay", Layer::Overlay}, {"impulses", Layer::Impulses}, {"grid", Layer::Grid},
+      {"mesh", Layer::Mesh}};
   return layers;
 }
 

@@ -36,6 +36,8 @@ inline constexpr Color contactPoint{1.0f, 0.9f, 0.1f, 1.0f};   // contact points
 inline constexpr Color contactNormal{1.0f, 0.5f, 0.0f, 1.0f};  // contact normals: orange
 inline constexpr Color staticBody{0.55f, 0.55f, 0.58f, 1.0f};
 inline constexpr Color sensorOverlap{0.2f, 0.95f, 0.95f, 1.0f};  // a sensor overlapping a body: cyan
+inline constexpr Color testedTriangle{1.0f, 0.6f, 0.15f, 1.0f};   // mesh layer: a triangle tested this step
+inline constexpr Color correctedEdge{1.0f, 0.2f, 0.85f, 1.0f};    // mesh layer: where the face normal replaced an edge's
 inline constexpr float sensorAlpha = 0.35f;  // sensors' solids are see-through: they push nothing
 }  // namespace colors
 
@@ -54,10 +56,11 @@ enum class Layer : std::uint32_t {
   Overlay = 1u << 9,
   Impulses = 1u << 10,
   Grid = 1u << 11,
+  Mesh = 1u << 12,  // level geometry's triangles the narrow phase tested, and its corrected edges
 };
 
-// Every layer's bit (Shapes .. Grid).
-inline constexpr std::uint32_t allLayerBits = (static_cast<std::uint32_t>(Layer::Grid) << 1) - 1;
+// Every layer's bit (Shapes .. Mesh).
+inline constexpr std::uint32_t allLayerBits = (static_cast<std::uint32_t>(Layer::Mesh) << 1) - 1;
 
 struct LayerSet {
   std::uint32_t bits = 0;

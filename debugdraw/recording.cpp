@@ -17,9 +17,13 @@ constexpr std::uint64_t chunkHeadBytes = 12;
 constexpr std::uint64_t maxFrameIndex = static_cast<std::uint64_t>(std::numeric_limits<int>::max());
 // Quaternion lengths the renderer can normalise without losing the rotation.
 constexpr double minRotationNorm = 1e-6, maxRotationNorm = 1e6;
-// The layer bits a version 2 or 3 tag may name (Shapes .. Grid). A new layer is a
-// new format version: an older reader could not say what to draw for it.
+// The layer bits a tag may name: Shapes .. Grid in versions 2 and 3, and
+// Mesh from version 4. A new layer is a new format version: an older reader
+// could not say what to draw for it.
 constexpr std::uint32_t knownLayerBits = allLayerBits;
+constexpr std::uint32_t knownLayerBitsOf(std::uint32_t version) {
+  return version >= 4 ? allLayerBits : (static_cast<std::uint32_t>(Layer::Grid) << 1) - 1;
+}
 // Encoded sizes in versions 2 and 3: a tag (u32 layer, five i32) and the fixed part
 // of a label (before its tag) and of a body, strings without their characters.
 constexpr std::size_t tagBytes = 4 + 5 * 4;
@@ -287,7 +291,7 @@ std::string problemOf(const BodyInfo& b) {
 std::string tagProblem(const Tag& tag) {
   if (tag.layer != 0 && (!std::has_single_bit(tag.layer) || (tag.layer & knownLayerBits) == 0))
     return "tag layer " + std::to_string(tag.layer) + " is neither 0 nor one known layer bit (1 .. " +
-           std::to_string(static_cast<std::uint32_t>(Layer::Grid)) + ")";
+           std::to_string(static_cast<std::uint32_t>(Layer::Mesh)) + ")";
   return ItemCheck()
       .atLeast(tag.body, -1, "tag body")
       .atLeast(tag.otherBody, -1, "tag other body")
@@ -506,11 +510,12 @@ class ListReader {
 
 // Version 1 frames hold only the layers that were shown.
 LayerSet readShownLayers(ByteReader& in, std::uint32_t version) {
-  if (version < 2) return LayerSet{knownLayerBits};
+  const std::uint32_t known = knownLayerBitsOf(version);
+  if (version < 2) return LayerSet{known};
   const std::uint32_t bits = in.u32();
-  if (bits == 0 || (bits & ~knownLayerBits) != 0)
+  if (bits == 0 || (bits & ~known) != 0)
     in.fail("shown layers " + std::to_string(bits) + " name no layer or an unknown one (known bits: " +
-            std::to_string(knownLayerBits) + ")");
+            std::to_string(known) + ")");
   return LayerSet{bits};
 }
 

@@ -2,7 +2,7 @@
 // Recordings: the debug-draw primitive stream of a run, so frames can be
 // rendered later, elsewhere, or in pieces, without the engine; with the tags,
 // labels and body state a viewer (replay) needs to choose layers, highlight,
-// label and follow bodies after the run. Format (version 3, all numbers
+// label and follow bodies after the run. Format (version 4, all numbers
 // little-endian, documented in debugdraw/RECORDING.md):
 //   "PHYSDBGR" u32 version, then chunks: u32 tag, u64 payload bytes, payload.
 //   tag 1 mesh: written once before the first frame that uses it.
@@ -26,7 +26,8 @@
 
 namespace physdbg::debugdraw {
 
-inline constexpr std::uint32_t recordingVersion = 3;  // what writers write; readers read 1 to 3
+// What writers write; readers read 1 to 4. Version 4 added the mesh layer's bit.
+inline constexpr std::uint32_t recordingVersion = 4;
 
 // Limits (RECORDING.md, "Limits"). Recordings come from other people: a value
 // beyond these is corruption or hostile input, refused before anything is

@@ -120,6 +120,9 @@ class World {
   const std::vector<NumericalFault>& numericalFaults() const { return faults_; }
   const StepStats& lastStepStats() const { return stats_; }
   const std::vector<Contact>& contacts() const { return contactPass_.contacts(); }
+  // The triangles of meshes and heightfields the last step's narrow phase
+  // tested, and where it gave a contact the face normal (the mesh layer).
+  const std::vector<ContactPass::MeshTest>& meshTests() const { return contactPass_.meshTests(); }
   // Pairs touching after the last step, asleep ones included: the pairs
   // contact events hold as begun and not ended. contacts() has the awake ones.
   std::size_t touchingPairCount() const;

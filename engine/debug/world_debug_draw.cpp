@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include <algorithm>
+#include <array>
 #include <string>
 
 #include "engine/broadphase/dynamic_aabb_tree.h"
@@ -15,6 +16,7 @@
 #include "engine/colliders/heightfield_collider.h"
 #include "engine/colliders/sphere_collider.h"
 #include "engine/colliders/triangle_mesh_collider.h"
+#include "engine/colliders/triangle_source.h"
 #include "engine/world.h"
 
 namespace physdbg {
@@ -151,6 +153,32 @@ void emitSensorOverlaps(const World& world, const Emit& emit, dd::Frame& frame) 
     emit(dd::tagOf(dd::Layer::Contacts, static_cast<int>(contact.a), static_cast<int>(contact.b)), [&] {
       const Vec3 middle = 0.5 * (contact.result.pointA + contact.result.pointB);
       frame.points.push_back({middle, 9.0f, dd::colors::sensorOverlap, {}});
+    });
+  }
+}
+
+// The mesh layer: each triangle of level geometry the narrow phase tested
+// this step outlined in orange, and where a contact on it took the face
+// normal instead of an inactive edge's (triangle_mesh_collider.h), that edge
+// in magenta, or a magenta dot on the corner (or the face's middle).
+template <typename Emit>
+void emitMeshTests(const World& world, const Emit& emit, dd::Frame& frame) {
+  for (const ContactPass::MeshTest& test : world.meshTests()) {
+    const RigidBody& mesh = world.bodies()[test.mesh];
+    const TriangleSource* source = triangleSourceOf(mesh.collider());
+    if (source == nullptr) continue;
+    const SourceTriangle triangle = source->triangleAt(test.test.triangle);
+    std::array<Vec3, 3> corners;
+    for (int c = 0; c < 3; ++c) corners[c] = mesh.transform().apply(triangle.corners[c]);
+    emit(dd::tagOf(dd::Layer::Mesh, static_cast<int>(test.mesh), static_cast<int>(test.other)), [&] {
+      for (int e = 0; e < 3; ++e) frame.lines.push_back({corners[e], corners[(e + 1) % 3], dd::colors::testedTriangle, {}});
+      const int feature = static_cast<int>(test.test.corrected);
+      if (feature >= 0 && feature < 3)
+        frame.lines.push_back({corners[feature], corners[(feature + 1) % 3], dd::colors::correctedEdge, {}});
+      else if (feature >= 3 && feature < 6)
+        frame.points.push_back({corners[feature - 3], 8.0f, dd::colors::correctedEdge, {}});
+      else if (feature == 6)
+        frame.points.push_back({(corners[0] + corners[1] + corners[2]) / 3.0, 8.0f, dd::colors::correctedEdge, {}});
     });
   }
 }
@@ -362,6 +390,7 @@ void emitDebugDraw(const World& world, dd::LayerSet layers, dd::Frame& frame, dd
     emit(dd::tagOf(dd::Layer::Contacts), [&] { emitShownContacts(shown, std::max(typicalSize, 0.2), frame); });
     emitSensorOverlaps(world, emit, frame);
   }
+  if (layers.has(dd::Layer::Mesh)) emitMeshTests(world, emit, frame);
   if (layers.has(dd::Layer::Impulses))
     emit(dd::tagOf(dd::Layer::Impulses), [&] { emitImpulses(shown, world.settings().dt, impulseScale(world), frame); });
   if (layers.has(dd::Layer::Pairs))

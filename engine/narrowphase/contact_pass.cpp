@@ -60,6 +60,7 @@ void ContactPass::run(const std::vector<RigidBody>& bodies, const std::vector<Bo
   tasks_ = context.tasks;
   counts_ = ContactPassCounts{};
   contacts_.clear();
+  meshTests_.clear();
   solver.clearContacts();
   {
     const StageTimer timer(profile.narrowPhase);
@@ -103,9 +104,10 @@ ContactPass::PairOutcome ContactPass::answerPair(const BodyPair& pair, const Ste
     const RigidBody &mesh = sourceA ? a : b, &other = sourceA ? b : a;
     answer.mesh = true;
     answer.meshManifolds.clear();
+    answer.meshTests.clear();
     answer.result = collideWithMesh(*source, mesh.transform(), other.collider(), other.transform(), sourceA != nullptr,
                                     pair.a, pair.b, reach, settings_.narrowPhase, scratch, answer.meshManifolds,
-                                    meshCounts);
+                                    meshCounts, &answer.meshTests);
     return PairOutcome::Tested;
   }
   if (offload_ && offload_->handles(a.collider().kind(), b.collider().kind()) && !settings_.bothOrders)
@@ -269,6 +271,11 @@ void ContactPass::gatherContacts(const StepContext& context) {
     }
     const PairAnswer& test = pairAnswers_[k++];
     const BodyPair& pair = pairs()[i];
+    if (test.mesh) {
+      const bool meshIsA = triangleSourceOf(bodies()[pair.a].collider()) != nullptr;
+      for (const MeshTriangleTest& tested : test.meshTests)
+        meshTests_.push_back({meshIsA ? pair.a : pair.b, meshIsA ? pair.b : pair.a, tested});
+    }
     if (bodies()[pair.a].isSensor() || bodies()[pair.b].isSensor()) {
       gatherSensorPair(pair, test);
       continue;

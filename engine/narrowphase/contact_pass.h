@@ -67,6 +67,12 @@ class ContactPass {
            ContactSolver& solver, const StepContext& context, StepProfile& profile, ContactPassCounts& counts);
   // The pairs within the solver's touching gap, in pair order.
   const std::vector<Contact>& contacts() const { return contacts_; }
+  // This pass's tests of level geometry's triangles, in pair order.
+  struct MeshTest {
+    std::uint32_t mesh, other;  // body ids
+    MeshTriangleTest test;
+  };
+  const std::vector<MeshTest>& meshTests() const { return meshTests_; }
   // After a step's last pass: the answers worth taking again next step,
   // from the solver's manifolds (in pair order, as the candidates).
   void keepAnswers(const std::vector<RigidBody>& bodies, const std::vector<ContactManifold>& manifolds);
@@ -87,6 +93,7 @@ class ContactPass {
     int cast = -1;                          // its manifold at the time of impact, in castManifolds_
     bool mesh = false;                      // a body against a triangle mesh: its manifolds are below
     std::vector<ContactManifold> meshManifolds;  // one per normal (mesh_contacts.h); storage kept between passes
+    std::vector<MeshTriangleTest> meshTests;     // the triangles tested, for the mesh debug layer
   };
   // What the pair screen needs of each body in a pair, this pass (measureBodies).
   struct MeasuredBody {
@@ -140,6 +147,7 @@ class ContactPass {
   std::vector<ManifoldSource> manifoldSources_;  // per candidate: its offloaded manifold or kept answer, if any
   KeptAnswers kept_;                             // answers worth taking again
   std::vector<Contact> contacts_;                // this pass's touching pairs
+  std::vector<MeshTest> meshTests_;
 };
 
 }  // namespace physdbg

@@ -56,9 +56,10 @@ ContactResult sphereTriangle(const TriangleCollider& triangle, const Transform& 
 }
 
 // Whether the triangle's feature nearest `point` (mesh frame, on or by the
-// triangle) lies on the smooth part of the mesh: its face, an inactive edge,
-// or a corner whose two edges are both inactive.
-bool onSmoothFeature(const SourceTriangle& triangle, const Vec3& point) {
+// triangle) lies on the smooth part of the mesh (its face, an inactive edge,
+// or a corner whose two edges are both inactive), and which.
+// The feature, or None where it is an active edge or corner.
+CorrectedFeature smoothFeature(const SourceTriangle& triangle, const Vec3& point) {
   const Vec3& a = triangle.corners[0];
   const Vec3 e1 = triangle.corners[1] - a, e2 = triangle.corners[2] - a, p = point - a;
   const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2), dp1 = p.dot(e1), dp2 = p.dot(e2);
@@ -74,9 +75,14 @@ bool onSmoothFeature(const SourceTriangle& triangle, const Vec3& point) {
       off = i;
     }
   }
-  if (onCount == 0) return true;
-  if (onCount == 1) return !triangle.edgeActive((on + 1) % 3);  // the edge opposite corner `on`
-  return !triangle.edgeActive(off) && !triangle.edgeActive((off + 2) % 3);  // the two edges at corner `off`
+  if (onCount == 0) return CorrectedFeature::Face;
+  if (onCount == 1) {  // the edge opposite corner `on`
+    const int edge = (on + 1) % 3;
+    return triangle.edgeActive(edge) ? CorrectedFeature::None : static_cast<CorrectedFeature>(edge);
+  }
+  // The corner `off`, between its two edges.
+  if (triangle.edgeActive(off) || triangle.edgeActive((off + 2) % 3)) return CorrectedFeature::None;
+  return static_cast<CorrectedFeature>(3 + off);
 }
 
 // The answer with the face normal: the convex shape's deepest point below
@@ -225,26 +231,28 @@ void mergeByNormal(MeshContactScratch& scratch, std::vector<ContactManifold>& ou
 
 ContactResult collideWithTriangle(const SourceTriangle& triangle, const Transform& meshPose, const Collider& convex,
                                   const Transform& convexPose, const NarrowPhaseOptions& options, double reach,
-                                  bool* corrected) {
+                                  CorrectedFeature* corrected) {
   const TriangleCollider shape = triangle.collider();
   ContactResult result =
       convex.kind() == ColliderKind::Sphere
           ? sphereTriangle(shape, meshPose, static_cast<const SphereCollider&>(convex), convexPose.position,
                            options.touchingTolerance)
           : collide(shape, meshPose, convex, convexPose, options);
-  if (corrected) *corrected = false;
+  if (corrected) *corrected = CorrectedFeature::None;
   if (signedDistance(result) > reach) return result;
   const double alongNormal = (meshPose.rotation.conjugate() * result.normal).dot(triangle.normal);
   if (std::abs(alongNormal) >= std::cos(meshMergeAngle)) return result;
-  if (!onSmoothFeature(triangle, meshPose.applyInverse(result.pointA))) return result;
-  if (corrected) *corrected = true;
+  const CorrectedFeature feature = smoothFeature(triangle, meshPose.applyInverse(result.pointA));
+  if (feature == CorrectedFeature::None) return result;
+  if (corrected) *corrected = feature;
   return alongFace(triangle, meshPose, convex, convexPose, result, options.touchingTolerance);
 }
 
 ContactResult collideWithMesh(const TriangleSource& mesh, const Transform& meshPose, const Collider& convex,
                               const Transform& convexPose, bool meshIsA, std::uint32_t a, std::uint32_t b,
                               double reach, const NarrowPhaseOptions& options, MeshContactScratch& scratch,
-                              std::vector<ContactManifold>& out, MeshContactCounts& counts) {
+                              std::vector<ContactManifold>& out, MeshContactCounts& counts,
+                              std::vector<MeshTriangleTest>* tested) {
   const Quat toMesh = meshPose.rotation.conjugate();
   const Transform relative{toMesh * (convexPose.position - meshPose.position), (toMesh * convexPose.rotation).normalized()};
   scratch.triangles.clear();
@@ -255,11 +263,13 @@ ContactResult collideWithMesh(const TriangleSource& mesh, const Transform& meshP
   double deepestDistance = deepest.distance;
   for (const std::uint32_t t : scratch.triangles) {
     ++counts.triangles;
-    bool corrected = false;
+    CorrectedFeature feature = CorrectedFeature::None;
     const SourceTriangle source = mesh.triangleAt(t);
-    ContactResult result = collideWithTriangle(source, meshPose, convex, convexPose, options, reach, &corrected);
+    ContactResult result = collideWithTriangle(source, meshPose, convex, convexPose, options, reach, &feature);
+    if (tested) tested->push_back({t, feature});
     const double distance = signedDistance(result);
     if (distance > reach) continue;
+    const bool corrected = feature != CorrectedFeature::None;
     counts.corrected += corrected ? 1 : 0;
     if (!meshIsA) result = swapped(result);
     ContactManifold& manifold = scratch.found.emplace_back();

@@ -31,6 +31,17 @@ struct MeshContactScratch {
   ManifoldScratch manifold;
 };
 
+// Where on a triangle a contact was given the face normal, for the debug
+// draw's mesh layer: an inactive edge, a corner whose edges are inactive, or
+// the face itself (GJK/EPA tilted the normal with the point inside).
+enum class CorrectedFeature : std::int8_t { None = -1, Edge0, Edge1, Edge2, Corner0, Corner1, Corner2, Face };
+
+// One triangle the narrow phase tested against a body.
+struct MeshTriangleTest {
+  std::uint32_t triangle = 0;
+  CorrectedFeature corrected = CorrectedFeature::None;
+};
+
 struct MeshContactCounts {
   long long triangles = 0;  // triangles tested
   long long corrected = 0;  // contacts on inactive edges or vertices given the face normal
@@ -43,22 +54,24 @@ inline constexpr double meshMergeAngle = 1e-6;
 
 // The manifolds between bodies a < b, one of which holds `mesh` (meshIsA
 // says which), appended to `out` (their normals from a to b, points sorted
-// by feature id). Points farther apart than `reach` are left out. Returns
+// by feature id), and the triangles it tested to `tested` (may be null).
+// Points farther apart than `reach` are left out. Returns
 // the pair's deepest answer (its normal and points from a to b), Separated
 // with an infinite distance when no triangle is within reach.
 ContactResult collideWithMesh(const TriangleSource& mesh, const Transform& meshPose, const Collider& convex,
                               const Transform& convexPose, bool meshIsA, std::uint32_t a, std::uint32_t b,
                               double reach, const NarrowPhaseOptions& options, MeshContactScratch& scratch,
-                              std::vector<ContactManifold>& out, MeshContactCounts& counts);
+                              std::vector<ContactManifold>& out, MeshContactCounts& counts,
+                              std::vector<MeshTriangleTest>* tested = nullptr);
 
 // One triangle of a mesh or heightfield (in its frame, placed by meshPose)
 // against a convex collider: the narrow phase's answer, normal from the
 // triangle to the convex shape. Where that answer is within `reach` and
 // found on an inactive edge or corner, the face normal is substituted and
 // the distance measured along it to the face's plane. `corrected` (may be
-// null) says whether it was.
+// null) says where, or None.
 ContactResult collideWithTriangle(const SourceTriangle& triangle, const Transform& meshPose, const Collider& convex,
                                   const Transform& convexPose, const NarrowPhaseOptions& options, double reach,
-                                  bool* corrected = nullptr);
+                                  CorrectedFeature* corrected = nullptr);
 
 }  // namespace physdbg

@@ -132,7 +132,7 @@ TEST(RecordingTags, EveryListWithTagsLabelsAndBodiesRoundTripsExactly) {
   const dd::RecordedFrame written = everyList();
   const std::string bytes = recordingBytes({written});
   dd::RecordingReader reader = readerOf(bytes, "tags.rec");
-  EXPECT_EQ(reader.version(), 3u);
+  EXPECT_EQ(reader.version(), 4u);
   dd::RecordedFrame read;
   ASSERT_TRUE(reader.next(read));
   EXPECT_EQ(read.index, 7);
@@ -205,7 +205,7 @@ TEST(RecordingTags, Version1FilesStillReadWithDefaultTags) {
   EXPECT_EQ(f.texts[0].text, "step 3");
   EXPECT_EQ(f.texts[0].color.g, 0.25f);
   EXPECT_FALSE(reader.next(read));
-  // Written again, it is a version 3 file with the same primitives.
+  // Written again, it is a version 4 file with the same primitives.
   const std::vector<dd::RecordedFrame> again = dd::readRecordingBytes(recordingBytes({read}), "again.rec");
   ASSERT_EQ(again.size(), 1u);
   EXPECT_EQ(again[0].frame.primitiveCount(), 9u);
@@ -229,10 +229,10 @@ TEST(RecordingTags, ReplayOfAVersion1FileDrawsItAndRefusesViewChoices) {
 
 TEST(RecordingTags, NewerVersionsAreRefusedNamingTheVersion) {
   std::string bytes = recordingBytes({everyList()});
-  putNumber(bytes, 8, std::uint32_t{4});
+  putNumber(bytes, 8, std::uint32_t{5});
   const Decoded decoded = decodeBytes(bytes, "future.rec");
   EXPECT_TRUE(decoded.refused);
-  expectMentions(decoded.message, {"'future.rec'", "version 4", "versions 1 to 3"});
+  expectMentions(decoded.message, {"'future.rec'", "version 5", "versions 1 to 4"});
   putNumber(bytes, 8, std::uint32_t{0});
   expectMentions(decodeBytes(bytes, "zero.rec").message, {"'zero.rec'", "version 0"});
 }
@@ -240,7 +240,9 @@ TEST(RecordingTags, NewerVersionsAreRefusedNamingTheVersion) {
 // The absent flag is version 3's: the same bytes labelled version 2 are
 // refused at the body that sets it (crate 1), saying which version has it.
 TEST(RecordingTags, AbsentFlagIsRefusedInAVersion2File) {
-  std::string bytes = recordingBytes({everyList()});
+  dd::RecordedFrame frame = everyList();
+  frame.shownLayers.bits &= ~static_cast<std::uint32_t>(Layer::Mesh);  // version 4's bit
+  std::string bytes = recordingBytes({frame});
   putNumber(bytes, 8, std::uint32_t{2});
   const Decoded decoded = decodeBytes(bytes, "old.rec");
   EXPECT_TRUE(decoded.refused);
@@ -273,8 +275,8 @@ std::vector<BadField> tagFields() {
   return {
       {"frame 7, lines item 0: tag layer 3 is neither 0 nor one known layer bit",
        [](auto& r, double v) { r.frame.lines[0].tag.layer = static_cast<std::uint32_t>(v); }, Encoding::u32, 0x80, 3},
-      {"frame 7, points item 0: tag layer 4096 is neither 0 nor one known layer bit",
-       [](auto& r, double v) { r.frame.points[0].tag.layer = static_cast<std::uint32_t>(v); }, Encoding::u32, 0x80, 4096},
+      {"frame 7, points item 0: tag layer 8192 is neither 0 nor one known layer bit",
+       [](auto& r, double v) { r.frame.points[0].tag.layer = static_cast<std::uint32_t>(v); }, Encoding::u32, 0x80, 8192},
       {"frame 7, solid boxes item 0: tag body -2 is below -1",
        [=](auto& r, double v) { r.frame.boxes[0].tag.body = i32(v); }, Encoding::i32, 654321, -2},
       {"frame 7, arrows item 0: tag other body -7 is below -1",
@@ -465,6 +467,17 @@ TEST(RecordingTags, TruncationInsideLabelsOrBodiesNamesTheList) {
     expectMentions(decoded.message, {"'cut.rec'", length < bodiesAt ? "frame 4, labels: " : "frame 4, bodies: "});
     EXPECT_LE(decoded.allocated, 5 * length + 16 * 1024);
   }
+}
+
+// The mesh layer's bit is version 4's: a version 3 file that shows it is refused.
+TEST(RecordingTags, MeshLayerIsRefusedInAVersion3File) {
+  dd::RecordedFrame frame = everyList();
+  frame.shownLayers.bits |= static_cast<std::uint32_t>(Layer::Mesh);
+  std::string bytes = recordingBytes({frame});
+  putNumber(bytes, 8, std::uint32_t{3});
+  const Decoded decoded = decodeBytes(bytes, "v3.rec");
+  EXPECT_TRUE(decoded.refused);
+  expectMentions(decoded.message, {"'v3.rec'", "shown layers"});
 }
 
 }  // namespace

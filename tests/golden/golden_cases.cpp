@@ -36,6 +36,15 @@ std::function<SceneDescription()> closeUp(SceneDescription (*make)(int), int siz
 
 SceneDescription pyramid(int base) { return pyramidScene(base); }
 
+// A shipped scene file, seen from `eye` toward `target`.
+std::function<SceneDescription()> sceneFile(const std::string& name, const Vec3& eye, const Vec3& target) {
+  return [=] {
+    SceneDescription scene = loadSceneFile(std::string(PHYSDBG_SOURCE_DIR) + "/scenes/" + name);
+    scene.camera = SceneCamera{eye, target};
+    return scene;
+  };
+}
+
 // A frame through the whole `physdbg render` path (SceneFrames, the viewer's
 // selection), for what only that path draws: focus, labels, the grid.
 std::function<render::Image(render::Renderer&)> viewed(std::function<SceneDescription()> scene, int frame,
@@ -77,6 +86,11 @@ const std::vector<GoldenCase>& goldenCases() {
       // the ground grid with its metre labels and axis gizmo.
       {"stack_impulses_grid", closeUp(stackScene, 4, Vec3(0, 2, 0), 9.0), 20, "shapes,impulses,grid",
        viewed(closeUp(stackScene, 4, Vec3(0, 2, 0), 9.0), 20, "shapes,impulses,grid")},
+      // Level geometry: a box sliding across a floor of triangles, the
+      // triangles it was tested against (orange) and the seams whose normals
+      // were corrected (magenta), over the mesh's wire triangles.
+      {"mesh_level_mesh", sceneFile("mesh_level.json", Vec3(-3.0, 3.5, 8.0), Vec3(-5.6, 0.3, 3.6)), 40,
+       "shapes,wire,contacts,mesh", {}},
   };
   return cases;
 }

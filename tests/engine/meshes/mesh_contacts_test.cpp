@@ -65,10 +65,10 @@ TEST(MeshContacts, SphereBesideABorderEdgeTakesTheEdgesNormal) {
   const OneTriangle triangle;
   SphereCollider sphere(0.5);
   const Transform at{triangle.world(Vec3(-0.3, 0.3, 2)), Quat::Identity()};
-  bool corrected = true;
+  CorrectedFeature corrected = CorrectedFeature::Face;
   const ContactResult result =
       collideWithTriangle(triangle.mesh->triangleAt(0), triangle.pose, sphere, at, NarrowPhaseOptions{}, 1.0, &corrected);
-  EXPECT_FALSE(corrected);
+  EXPECT_EQ(corrected, CorrectedFeature::None);
   EXPECT_NEAR(signedDistance(result), std::sqrt(0.18) - 0.5, exact);
   EXPECT_LT((result.normal - triangle.direction(Vec3(-1, 1, 0).normalized())).norm(), exact);
   EXPECT_LT((result.pointA - triangle.world(Vec3(0, 0, 2))).norm(), exact);
