@@ -119,12 +119,26 @@ void readMeshFile(const JsonReader& reader, const json& parameters, const std::s
   }
 }
 
+// "convex": true: the hull of the mesh's vertices, a shape a dynamic body
+// can hold (a rock or a crate exported from a modelling tool).
+std::shared_ptr<const Collider> convexHullOf(const JsonReader& reader, const std::string& path,
+                                             std::vector<Vec3> vertices) {
+  if (vertices.size() > limits::maxHullPoints)
+    reader.fail(path, "has " + std::to_string(vertices.size()) + " vertices, more than a convex hull takes (" +
+                          std::to_string(limits::maxHullPoints) + ")");
+  try {
+    return std::make_shared<ConvexMeshCollider>(std::move(vertices));
+  } catch (const std::invalid_argument& error) {
+    reader.fail(path + ".convex", error.what());
+  }
+}
+
 // A triangle mesh given inline or by file; see scenes/README.md.
 std::shared_ptr<const Collider> readMesh(const JsonReader& reader, const json& parameters, const std::string& path,
                                          std::vector<std::string>& notes) {
   reader.requireObject(parameters, path);
   reader.checkKeys(parameters, path,
-                   {"vertices", "triangles", "active_edge_degrees", "file", "scale", "up_axis", "nodes"});
+                   {"vertices", "triangles", "active_edge_degrees", "file", "scale", "up_axis", "nodes", "convex"});
   std::vector<Vec3> vertices;
   std::vector<MeshTriangle> triangles;
   const bool inFile = parameters.contains("file");
@@ -135,6 +149,11 @@ std::shared_ptr<const Collider> readMesh(const JsonReader& reader, const json& p
       if (parameters.contains(key)) reader.fail(path + "." + key, "applies to a mesh file, and this mesh has none");
   if (inFile) readMeshFile(reader, parameters, path, vertices, triangles, notes);
   else readInlineMesh(reader, parameters, path, vertices, triangles);
+  if (parameters.contains("convex") && reader.boolean(parameters["convex"], path + ".convex")) {
+    if (parameters.contains("active_edge_degrees"))
+      reader.fail(path + ".active_edge_degrees", "applies to a triangle mesh, not to \"convex\": true");
+    return convexHullOf(reader, path, std::move(vertices));
+  }
   double degrees = TriangleMeshCollider::defaultActiveEdgeDegrees;
   if (parameters.contains("active_edge_degrees"))
     degrees = reader.inRange(parameters["active_edge_degrees"], path + ".active_edge_degrees", 0.0, 180.0);

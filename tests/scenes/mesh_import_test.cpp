@@ -122,5 +122,18 @@ TEST(MeshImport, ShippedLevelScenesLoadFromTheirFolderAndRunAlike) {
   for (std::size_t i = 0; i < a.bodies().size(); ++i) EXPECT_EQ(a.bodies()[i].position(), b.bodies()[i].position());
 }
 
+TEST(MeshImport, ConvexTrueMakesTheHullForADynamicBody) {
+  const SceneDescription scene = parseScene(
+      R"({"bodies": [{"shape": {"mesh": {"file": ")" + levels + R"(valley.obj", "convex": true, "scale": 0.1}},
+          "mass": 2}]})",
+      "rock.json");
+  ASSERT_EQ(scene.bodies[0].collider->kind(), ColliderKind::ConvexMesh);
+  const Aabb bounds = scene.bodies[0].collider->localBounds();
+  EXPECT_NEAR(bounds.max.x() - bounds.min.x(), 1.6, 1e-9);  // the valley's 16 m, scaled
+  World world = buildWorld(scene);
+  world.step();
+  EXPECT_LT(world.body(0).linearVelocity().y(), 0.0);  // dynamic: it falls
+}
+
 }  // namespace
 }  // namespace physdbg
