@@ -1,15 +1,21 @@
 #include "bench/bullet_world.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
 #include "engine/colliders/box_collider.h"
+#include "engine/colliders/capsule_collider.h"
+#include "engine/colliders/convex_mesh_collider.h"
+#include "engine/colliders/heightfield_collider.h"
 #include "engine/colliders/sphere_collider.h"
+#include "engine/colliders/triangle_mesh_collider.h"
 
 #ifdef PHYSDBG_HAVE_BULLET
 #include "bench/bullet_convert.h"
+#include <BulletCollision/CollisionShapes/btHeightfieldTerrainShape.h>
 #include <btBulletDynamicsCommon.h>
 #endif
 
@@ -18,15 +24,68 @@ namespace physdbg::bench {
 #ifdef PHYSDBG_HAVE_BULLET
 namespace {
 
-std::unique_ptr<btCollisionShape> makeShape(const Collider& collider) {
-  if (const auto* sphere = dynamic_cast<const SphereCollider*>(&collider)) {
-    return std::make_unique<btSphereShape>(btScalar(sphere->radius()));
-  }
-  if (const auto* box = dynamic_cast<const BoxCollider*>(&collider)) {
-    return std::make_unique<btBoxShape>(toBullet(box->halfExtents()));
+// What a Bullet mesh or heightfield shape reads from but does not own.
+struct ShapeData {
+  std::vector<int> indices;
+  std::vector<btScalar> vertices;  // also a heightfield's heights
+  std::unique_ptr<btTriangleIndexVertexArray> triangles;
+};
+
+std::unique_ptr<btCollisionShape> meshShape(const TriangleMeshCollider& mesh, ShapeData& data) {
+  for (const Vec3& vertex : mesh.vertices())
+    for (int axis = 0; axis < 3; ++axis) data.vertices.push_back(btScalar(vertex[axis]));
+  for (const MeshTriangle& triangle : mesh.triangles())
+    for (const std::uint32_t corner : triangle) data.indices.push_back(static_cast<int>(corner));
+  data.triangles = std::make_unique<btTriangleIndexVertexArray>(
+      static_cast<int>(mesh.triangles().size()), data.indices.data(), 3 * static_cast<int>(sizeof(int)),
+      static_cast<int>(mesh.vertices().size()), data.vertices.data(), 3 * static_cast<int>(sizeof(btScalar)));
+  return std::make_unique<btBvhTriangleMeshShape>(data.triangles.get(), true);
+}
+
+// Bullet centres a field on the middle of its height range; the body is
+// moved up by that much to match (heightfieldOffset).
+std::unique_ptr<btCollisionShape> fieldShape(const HeightfieldCollider& field, ShapeData& data) {
+  for (int row = 0; row < field.rows(); ++row)
+    for (int column = 0; column < field.columns(); ++column)
+      data.vertices.push_back(btScalar(field.samplePoint(column, row).y()));
+  const Aabb bounds = field.localBounds();
+  auto shape = std::make_unique<btHeightfieldTerrainShape>(field.columns(), field.rows(), data.vertices.data(), 1.0,
+                                                           btScalar(bounds.min.y()), btScalar(bounds.max.y()), 1,
+                                                           PHY_FLOAT, false);
+  shape->setLocalScaling(btVector3(btScalar(field.spacingX()), 1, btScalar(field.spacingZ())));
+  return shape;
+}
+
+std::unique_ptr<btCollisionShape> makeShape(const Collider& collider, ShapeData& data) {
+  switch (collider.kind()) {
+    case ColliderKind::Sphere:
+      return std::make_unique<btSphereShape>(btScalar(static_cast<const SphereCollider&>(collider).radius()));
+    case ColliderKind::Box:
+      return std::make_unique<btBoxShape>(toBullet(static_cast<const BoxCollider&>(collider).halfExtents()));
+    case ColliderKind::Capsule: {
+      const auto& capsule = static_cast<const CapsuleCollider&>(collider);
+      return std::make_unique<btCapsuleShape>(btScalar(capsule.radius()), btScalar(2 * capsule.halfHeight()));
+    }
+    case ColliderKind::ConvexMesh: {
+      auto hull = std::make_unique<btConvexHullShape>();
+      for (const Vec3& vertex : static_cast<const ConvexMeshCollider&>(collider).hullVertices())
+        hull->addPoint(toBullet(vertex), false);
+      hull->recalcLocalAabb();
+      return hull;
+    }
+    case ColliderKind::TriangleMesh: return meshShape(static_cast<const TriangleMeshCollider&>(collider), data);
+    case ColliderKind::Heightfield: return fieldShape(static_cast<const HeightfieldCollider&>(collider), data);
+    case ColliderKind::Triangle: break;
   }
   throw std::invalid_argument(std::string("BulletWorld: unsupported collider kind ") +
-                              colliderKindName(collider.kind()) + " (spheres and boxes only)");
+                              colliderKindName(collider.kind()));
+}
+
+// Bullet's heightfield origin is the middle of its height range, physdbg's the sample plane's y = 0.
+Vec3 heightfieldOffset(const Collider& collider) {
+  if (collider.kind() != ColliderKind::Heightfield) return Vec3::Zero();
+  const Aabb bounds = collider.localBounds();
+  return Vec3(0, 0.5 * (bounds.min.y() + bounds.max.y()), 0);
 }
 
 }  // namespace
@@ -39,6 +98,7 @@ struct BulletWorld::Impl {
   btSequentialImpulseConstraintSolver solver;
   btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
   btScalar dt = 1.0f / 60.0f;
+  std::vector<std::unique_ptr<ShapeData>> shapeData;  // before the shapes: they read it
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<btDefaultMotionState>> motionStates;
   std::vector<std::unique_ptr<btRigidBody>> bodies;
@@ -52,7 +112,8 @@ struct BulletWorld::Impl {
     for (std::size_t i = 0; i < sources.size(); ++i) {
       if (sources[i] == &collider) return shapes[i].get();
     }
-    shapes.push_back(makeShape(collider));
+    shapeData.push_back(std::make_unique<ShapeData>());
+    shapes.push_back(makeShape(collider, *shapeData.back()));
     sources.push_back(&collider);
     return shapes.back().get();
   }
@@ -63,7 +124,7 @@ struct BulletWorld::Impl {
     if (mass > 0) shape->calculateLocalInertia(mass, inertia);
     const Quat& q = definition.orientation;
     const btTransform start(btQuaternion(btScalar(q.x()), btScalar(q.y()), btScalar(q.z()), btScalar(q.w())),
-                            toBullet(definition.position));
+                            toBullet(definition.position + q * heightfieldOffset(*definition.collider)));
     motionStates.push_back(std::make_unique<btDefaultMotionState>(start));
     btRigidBody::btRigidBodyConstructionInfo info(mass, motionStates.back().get(), shape, inertia);
     info.m_friction = btScalar(std::sqrt(definition.material.dynamicFriction));
@@ -78,6 +139,13 @@ struct BulletWorld::Impl {
 };
 
 bool BulletWorld::available() { return true; }
+
+double BulletWorld::meshBuildMilliseconds(const TriangleMeshCollider& mesh) {
+  const auto start = std::chrono::steady_clock::now();
+  ShapeData data;
+  const std::unique_ptr<btCollisionShape> shape = meshShape(mesh, data);
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
 
 BulletWorld::BulletWorld(const SceneDescription& scene, bool allowSleep) : impl_(std::make_unique<Impl>()) {
   impl_->world.setGravity(toBullet(scene.world.gravity));
@@ -156,6 +224,7 @@ double BulletWorld::kineticEnergy() const {
 struct BulletWorld::Impl {};
 
 bool BulletWorld::available() { return false; }
+double BulletWorld::meshBuildMilliseconds(const TriangleMeshCollider&) { return 0.0; }
 BulletWorld::BulletWorld(const SceneDescription&, bool) {
   throw std::runtime_error("BulletWorld: physdbg was built without Bullet");
 }

@@ -1,6 +1,7 @@
 #pragma once
-// The same scene in Bullet, for side-by-side benchmarks: spheres and boxes
-// only, btDbvtBroadphase, btSequentialImpulseConstraintSolver with its
+// The same scene in Bullet, for side-by-side benchmarks: spheres, boxes,
+// capsules, convex hulls, triangle meshes (btBvhTriangleMeshShape, its
+// quantised hierarchy) and heightfields (btHeightfieldTerrainShape), btDbvtBroadphase, btSequentialImpulseConstraintSolver with its
 // default 10 iterations, one fixed substep per step.
 //
 // Bullet multiplies the friction and restitution of a pair where physdbg
@@ -13,14 +14,21 @@
 #include "engine/math.h"
 #include "scenes/scene.h"
 
+namespace physdbg {
+class TriangleMeshCollider;
+}
+
 namespace physdbg::bench {
 
 class BulletWorld {
  public:
   // False when the project was built without Bullet.
   static bool available();
+  // Milliseconds Bullet takes to build a btBvhTriangleMeshShape (quantised
+  // hierarchy) over `mesh`'s triangles; 0 without Bullet.
+  static double meshBuildMilliseconds(const TriangleMeshCollider& mesh);
 
-  // Throws std::invalid_argument for a collider other than a sphere or box,
+  // Throws std::invalid_argument for a collider Bullet is not given here,
   // std::runtime_error when Bullet is not available.
   BulletWorld(const SceneDescription& scene, bool allowSleep);
   ~BulletWorld();

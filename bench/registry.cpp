@@ -14,6 +14,7 @@ Benchmark pyramidBenchmark();
 Benchmark sleepingBenchmark();
 Benchmark joltPyramidBenchmark();
 Benchmark memoryBenchmark();
+Benchmark meshBenchmark();
 
 // Each benchmark lives in its own file and is listed here, in output order.
 std::vector<Benchmark> allBenchmarks() {
@@ -29,6 +30,7 @@ std::vector<Benchmark> allBenchmarks() {
   benchmarks.push_back(pyramidBenchmark());
   benchmarks.push_back(joltPyramidBenchmark());
   benchmarks.push_back(sleepingBenchmark());
+  benchmarks.push_back(meshBenchmark());
   benchmarks.push_back(memoryBenchmark());
 #ifdef PHYSDBG_HAVE_RENDER
   benchmarks.push_back(gpuBenchmark());

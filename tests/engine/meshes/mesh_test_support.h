@@ -6,24 +6,21 @@
 #include <memory>
 #include <vector>
 
+#include "engine/colliders/heightfield_collider.h"
 #include "engine/colliders/triangle_mesh_collider.h"
 #include "engine/dynamics/rigid_body.h"
 
 namespace physdbg::meshtest {
 
 // A square grid of `cells` x `cells` cells of side `cell` in the plane y = 0
-// centred on the origin, two triangles a cell, wound so the normals point up.
+// centred on the origin, two triangles a cell, wound so the normals point up
+// (a flat heightfield's triangles, as a mesh).
 inline std::shared_ptr<TriangleMeshCollider> gridFloor(int cells, double cell) {
   std::vector<Vec3> vertices;
   std::vector<MeshTriangle> triangles;
-  for (int j = 0; j <= cells; ++j)
-    for (int i = 0; i <= cells; ++i) vertices.emplace_back((i - 0.5 * cells) * cell, 0.0, (j - 0.5 * cells) * cell);
-  const auto at = [cells](int i, int j) { return static_cast<std::uint32_t>(j * (cells + 1) + i); };
-  for (int j = 0; j < cells; ++j)
-    for (int i = 0; i < cells; ++i) {
-      triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j)});
-      triangles.push_back({at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)});
-    }
+  const std::size_t samples = static_cast<std::size_t>(cells + 1) * static_cast<std::size_t>(cells + 1);
+  HeightfieldCollider(std::vector<float>(samples, 0.0f), cells + 1, cells + 1, cell, cell, 1.0)
+      .sampledGrid(cells, vertices, triangles);
   return std::make_shared<TriangleMeshCollider>(std::move(vertices), triangles);
 }
 
