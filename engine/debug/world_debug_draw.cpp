@@ -183,6 +183,33 @@ void emitMeshTests(const World& world, const Emit& emit, dd::Frame& frame) {
   }
 }
 
+// The tree layer also draws each triangle mesh's own hierarchy, in the
+// tree's blues by depth and tagged with its depth and body, so --tree-depth
+// and highlighting pick its levels as they pick the broad phase's. (The
+// legend counts the broad phase's nodes only.)
+void emitMeshHierarchies(const World& world, dd::Frame& frame) {
+  const std::vector<RigidBody>& bodies = world.bodies();
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (!world.isPresent(i) || bodies[i].collider().kind() != ColliderKind::TriangleMesh) continue;
+    const RigidBody& body = bodies[i];
+    const TriangleBvh& bvh = static_cast<const TriangleMeshCollider&>(body.collider()).bvh();
+    if (bvh.nodes().empty()) continue;
+    std::vector<std::pair<std::uint32_t, int>> stack{{0u, 0}};
+    while (!stack.empty()) {
+      const auto [index, depth] = stack.back();
+      stack.pop_back();
+      const TriangleBvh::Node& node = bvh.nodes()[index];
+      dd::Tag tag = dd::tagOf(dd::Layer::Tree, static_cast<int>(i));
+      tag.depth = depth;
+      frame.wireBoxes.push_back({body.transform().apply(node.bounds.center()), body.orientation(),
+                                 node.bounds.halfExtents(), treeNodeColor(depth), tag});
+      if (node.isLeaf()) continue;
+      stack.push_back({node.first + 1, depth + 1});
+      stack.push_back({node.first, depth + 1});
+    }
+  }
+}
+
 // Per body: 0 no contact since the last frame, 1 only contacts it rests on
 // asleep, 2 a contact while awake. The aabbs layer colours boxes by it.
 std::vector<int> contactStates(const std::vector<ShownContact>& points, std::size_t bodyCount) {
@@ -386,6 +413,7 @@ void emitDebugDraw(const World& world, dd::LayerSet layers, dd::Frame& frame, dd
       options.leaves = false;  // the fat boxes are the `fat` layer
       drawTree(*broadPhaseTree, options, frame);
     });
+  if (layers.has(dd::Layer::Tree)) emit(dd::tagOf(dd::Layer::Tree), [&] { emitMeshHierarchies(world, frame); });
   if (layers.has(dd::Layer::Contacts)) {
     emit(dd::tagOf(dd::Layer::Contacts), [&] { emitShownContacts(shown, std::max(typicalSize, 0.2), frame); });
     emitSensorOverlaps(world, emit, frame);

@@ -66,5 +66,26 @@ TEST(MeshLayer, EmitsNothingWithoutMeshesOrWhenNotAsked) {
   EXPECT_EQ(counts.of(dd::Layer::Mesh), 0u);
 }
 
+TEST(MeshLayer, TheTreeLayerDrawsEachMeshHierarchyByDepth) {
+  WorldSettings settings;
+  settings.threads = 1;
+  World world(settings);
+  const auto floor = meshtest::gridFloor(10, 2.0);
+  BodyDefinition level = meshtest::staticBody(floor, Vec3(1, 2, 3), Quat(Eigen::AngleAxisd(0.3, Vec3::UnitX())));
+  const BodyId id = world.addBody(level);
+  dd::Frame frame;
+  emitDebugDraw(world, dd::parseLayers("tree"), frame);
+  std::size_t nodes = 0;
+  int deepest = 0;
+  for (const dd::WireBox& box : frame.wireBoxes) {
+    if (box.tag.body != static_cast<int>(id)) continue;
+    ++nodes;
+    deepest = std::max(deepest, box.tag.depth);
+    EXPECT_TRUE(box.orientation.isApprox(level.orientation));  // in the body's frame, turned with it
+  }
+  EXPECT_EQ(nodes, floor->bvh().nodes().size());
+  EXPECT_EQ(deepest + 1, floor->bvh().depth());
+}
+
 }  // namespace
 }  // namespace physdbg
