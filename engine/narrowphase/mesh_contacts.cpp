@@ -231,7 +231,7 @@ void mergeByNormal(MeshContactScratch& scratch, std::vector<ContactManifold>& ou
 
 ContactResult collideWithTriangle(const SourceTriangle& triangle, const Transform& meshPose, const Collider& convex,
                                   const Transform& convexPose, const NarrowPhaseOptions& options, double reach,
-                                  CorrectedFeature* corrected) {
+                                  CorrectedFeature* corrected, ContactResult* uncorrected) {
   const TriangleCollider shape = triangle.collider();
   ContactResult result =
       convex.kind() == ColliderKind::Sphere
@@ -239,6 +239,7 @@ ContactResult collideWithTriangle(const SourceTriangle& triangle, const Transfor
                            options.touchingTolerance)
           : collide(shape, meshPose, convex, convexPose, options);
   if (corrected) *corrected = CorrectedFeature::None;
+  if (uncorrected) *uncorrected = result;
   if (signedDistance(result) > reach) return result;
   const double alongNormal = (meshPose.rotation.conjugate() * result.normal).dot(triangle.normal);
   if (std::abs(alongNormal) >= std::cos(meshMergeAngle)) return result;
@@ -261,11 +262,20 @@ ContactResult collideWithMesh(const TriangleSource& mesh, const Transform& meshP
   ContactResult deepest;
   deepest.distance = std::numeric_limits<double>::infinity();
   double deepestDistance = deepest.distance;
+  // The nearest contact that took the face normal and then lay off its
+  // triangle: where every triangle's was (a ball on a convex peak whose
+  // edges are too gentle to be active, each face's plane passing under the
+  // ball beside its own face), the peak's own contact is taken instead.
+  double droppedDistance = std::numeric_limits<double>::infinity();
+  ContactResult dropped;
+  std::uint32_t droppedTriangle = 0;
   for (const std::uint32_t t : scratch.triangles) {
     ++counts.triangles;
     CorrectedFeature feature = CorrectedFeature::None;
     const SourceTriangle source = mesh.triangleAt(t);
-    ContactResult result = collideWithTriangle(source, meshPose, convex, convexPose, options, reach, &feature);
+    ContactResult uncorrected;
+    ContactResult result =
+        collideWithTriangle(source, meshPose, convex, convexPose, options, reach, &feature, &uncorrected);
     if (tested) tested->push_back({t, feature});
     const double distance = signedDistance(result);
     if (distance > reach) continue;
@@ -281,12 +291,27 @@ ContactResult collideWithMesh(const TriangleSource& mesh, const Transform& meshP
     if (corrected) keepOnTriangle(source, meshPose, meshIsA, manifold);
     if (manifold.pointCount == 0) {
       scratch.found.pop_back();
+      if (corrected && signedDistance(uncorrected) < droppedDistance) {
+        droppedDistance = signedDistance(uncorrected);
+        dropped = meshIsA ? uncorrected : swapped(uncorrected);
+        droppedTriangle = t;
+      }
       continue;
     }
     if (distance < deepestDistance) {
       deepestDistance = distance;
       deepest = result;
     }
+  }
+  if (scratch.found.empty() && droppedDistance <= reach) {
+    ContactManifold& manifold = scratch.found.emplace_back();
+    manifold.a = a;
+    manifold.b = b;
+    const TriangleCollider triangle = mesh.triangleAt(droppedTriangle).collider();
+    if (meshIsA) buildGeneralManifold(triangle, meshPose, convex, convexPose, dropped, reach, scratch.manifold, manifold);
+    else buildGeneralManifold(convex, convexPose, triangle, meshPose, dropped, reach, scratch.manifold, manifold);
+    if (manifold.pointCount == 0) scratch.found.pop_back();
+    else deepest = dropped;
   }
   mergeByNormal(scratch, out);
   return deepest;

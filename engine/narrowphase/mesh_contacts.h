@@ -69,9 +69,10 @@ ContactResult collideWithMesh(const TriangleSource& mesh, const Transform& meshP
 // triangle to the convex shape. Where that answer is within `reach` and
 // found on an inactive edge or corner, the face normal is substituted and
 // the distance measured along it to the face's plane. `corrected` (may be
-// null) says where, or None.
+// null) says where, or None; `uncorrected` (may be null) gets the answer
+// before the substitution.
 ContactResult collideWithTriangle(const SourceTriangle& triangle, const Transform& meshPose, const Collider& convex,
                                   const Transform& convexPose, const NarrowPhaseOptions& options, double reach,
-                                  CorrectedFeature* corrected = nullptr);
+                                  CorrectedFeature* corrected = nullptr, ContactResult* uncorrected = nullptr);
 
 }  // namespace physdbg
