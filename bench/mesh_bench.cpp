@@ -4,7 +4,8 @@
 // - mesh/triangles: a 100 x 100 cell sine-wave mesh of 20,000 triangles
 //   (1 m cells, y = 2 sin(0.2 i) cos(0.2 j)) under 1,764 bodies: a 21 x 21
 //   grid 4 m apart of a sphere, a box, a capsule and a convex hull each,
-//   stacked 2.5 m apart from 5 m up; 500 steps, sleeping off;
+//   stacked 2.5 m apart from 5 m up, a rim of boxes along the mesh's edges
+//   keeping them on it; 500 steps, sleeping off;
 // - mesh/heightfield: the same surface as a 1,000 x 1,000 sample
 //   heightfield (0.1 m cells) under the same pile.
 // Each record also gives the time to build the mesh (its hierarchy and
@@ -53,7 +54,8 @@ std::shared_ptr<HeightfieldCollider> sineField(int samples, double extent) {
   return std::make_shared<HeightfieldCollider>(std::move(heights), samples, samples, spacing, spacing, 1.0);
 }
 
-SceneDescription pileOver(std::shared_ptr<const Collider> ground, int grid, int steps) {
+// `extent`: the surface's side, m.
+SceneDescription pileOver(std::shared_ptr<const Collider> ground, double extent, int grid, int steps) {
   SceneDescription scene;
   scene.steps = steps;
   scene.world.allowSleep = false;
@@ -62,6 +64,18 @@ SceneDescription pileOver(std::shared_ptr<const Collider> ground, int grid, int 
   floor.isStatic = true;
   floor.material = {0.2, 0.5, 0.5};
   scene.bodies.push_back(floor);
+  // A rim along the surface's edges, so that bodies rolling down its slopes
+  // stay on it in both engines: bodies that left it would be outside.
+  const double edge = 0.5 * extent;
+  for (const double side : {-1.0, 1.0})
+    for (const bool alongX : {false, true}) {
+      BodyDefinition rim;
+      rim.collider = std::make_shared<BoxCollider>(alongX ? Vec3(edge + 1.0, 3.0, 0.5) : Vec3(0.5, 3.0, edge + 1.0));
+      rim.position = alongX ? Vec3(0, 0, side * (edge + 0.5)) : Vec3(side * (edge + 0.5), 0, 0);
+      rim.isStatic = true;
+      rim.material = floor.material;
+      scene.bodies.push_back(rim);
+    }
   const std::vector<std::shared_ptr<const Collider>> shapes = {
       std::make_shared<SphereCollider>(0.5), std::make_shared<BoxCollider>(Vec3(0.5, 0.5, 0.5)),
       std::make_shared<CapsuleCollider>(0.3, 0.5),
@@ -89,7 +103,7 @@ void runPile(const std::string& name, const SceneDescription& scene, double ours
   std::optional<double> singleThreadMs;
   for (const int threads : benchThreadCounts(options)) {
     const EngineRun ours = runOurs(scene, steps, options, threads);
-    nlohmann::json record = benchRecord(name, static_cast<long long>(scene.bodies.size() - 1), ours.msPerStep,
+    nlohmann::json record = benchRecord(name, static_cast<long long>(scene.bodies.size() - 5), ours.msPerStep,
                                         peer.ran ? "bullet 3.24 btDbvt+SI(10), btBvhTriangleMeshShape / "
                                                    "btHeightfieldTerrainShape"
                                                  : "",
@@ -104,7 +118,7 @@ void runPile(const std::string& name, const SceneDescription& scene, double ours
       record["build_ratio"] = oursBuildMs / peerBuildMs;
     }
     WorkCheck check;
-    check.firstDynamic = 1;
+    check.firstDynamic = 5;  // after the surface and its rim
     check.bodySize = 1.0;
     check.outside = [](const Vec3& p) { return p.y() < surface(p.x(), p.z()) - 1.0; };  // below the surface
     addWorkFields(record, ours, peer, check);
@@ -119,14 +133,14 @@ void runMeshBenchmark(const BenchOptions& options, const BenchSink& sink) {
   const auto start = std::chrono::steady_clock::now();
   const std::shared_ptr<TriangleMeshCollider> mesh = sineMesh(cells);
   const double buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  runPile("mesh/triangles", pileOver(mesh, grid, steps), buildMs, BulletWorld::meshBuildMilliseconds(*mesh), options,
+  runPile("mesh/triangles", pileOver(mesh, cells, grid, steps), buildMs, BulletWorld::meshBuildMilliseconds(*mesh), options,
           sink);
   const int samples = options.quick ? 101 : 1000;
   const auto fieldStart = std::chrono::steady_clock::now();
   const std::shared_ptr<HeightfieldCollider> field = sineField(samples, cells);
   const double fieldMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - fieldStart).count();
-  runPile("mesh/heightfield", pileOver(field, grid, steps), fieldMs, 0.0, options, sink);
+  runPile("mesh/heightfield", pileOver(field, cells, grid, steps), fieldMs, 0.0, options, sink);
 }
 
 }  // namespace
