@@ -10,6 +10,7 @@
 #include "bench/drop_scene.h"
 #include "bench/side_by_side.h"
 #include "engine/colliders/capsule_collider.h"
+#include "engine/colliders/triangle_collider.h"
 
 namespace physdbg::bench {
 namespace {
@@ -81,9 +82,10 @@ TEST(BulletWorld, FreeFallMatchesOurs) {
 TEST(BulletWorld, RejectsShapesItCannotBuild) {
   if (!BulletWorld::available()) GTEST_SKIP() << "built without Bullet";
   SceneDescription scene;
-  BodyDefinition capsule;
-  capsule.collider = std::make_shared<CapsuleCollider>(0.5, 0.25);
-  scene.bodies.push_back(capsule);
+  BodyDefinition triangle;  // a mesh's triangle on its own: only the narrow phase makes one
+  triangle.collider = std::make_shared<TriangleCollider>(Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3::UnitY());
+  triangle.isStatic = true;
+  scene.bodies.push_back(triangle);
   EXPECT_THROW(BulletWorld(scene, true), std::invalid_argument);
 }
 
