@@ -55,17 +55,23 @@ ContactResult sphereTriangle(const TriangleCollider& triangle, const Transform& 
                          centre - sphere.radius() * normal, touchingTolerance);
 }
 
-// Whether the triangle's feature nearest `point` (mesh frame, on or by the
-// triangle) lies on the smooth part of the mesh (its face, an inactive edge,
-// or a corner whose two edges are both inactive), and which.
-// The feature, or None where it is an active edge or corner.
-CorrectedFeature smoothFeature(const SourceTriangle& triangle, const Vec3& point) {
+// The barycentric coordinates of `point` (mesh frame) projected onto the
+// triangle's plane: one per corner, summing to 1.
+Vec3 barycentric(const SourceTriangle& triangle, const Vec3& point) {
   const Vec3& a = triangle.corners[0];
   const Vec3 e1 = triangle.corners[1] - a, e2 = triangle.corners[2] - a, p = point - a;
   const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2), dp1 = p.dot(e1), dp2 = p.dot(e2);
   const double denominator = d11 * d22 - d12 * d12;
   const double v = (d22 * dp1 - d12 * dp2) / denominator, w = (d11 * dp2 - d12 * dp1) / denominator;
-  const double coordinates[3] = {1.0 - v - w, v, w};
+  return Vec3(1.0 - v - w, v, w);
+}
+
+// Whether the triangle's feature nearest `point` (mesh frame, on or by the
+// triangle) lies on the smooth part of the mesh (its face, an inactive edge,
+// or a corner whose two edges are both inactive), and which.
+// The feature, or None where it is an active edge or corner.
+CorrectedFeature smoothFeature(const SourceTriangle& triangle, const Vec3& point) {
+  const Vec3 coordinates = barycentric(triangle, point);
   int onCount = 0, off = 0, on = 0;
   for (int i = 0; i < 3; ++i) {
     if (coordinates[i] <= onFeatureTolerance) {
@@ -115,16 +121,11 @@ double signedDistance(const ContactResult& result) {
 // a shape that clips to nothing (a sphere, or a box over the neighbour) may not.
 void keepOnTriangle(const SourceTriangle& triangle, const Transform& meshPose, bool meshIsA,
                     ContactManifold& manifold) {
-  const Vec3& a = triangle.corners[0];
-  const Vec3 e1 = triangle.corners[1] - a, e2 = triangle.corners[2] - a;
   int kept = 0;
   for (int p = 0; p < manifold.pointCount; ++p) {
     const ManifoldPoint& point = manifold.points[p];
-    const Vec3 local = meshPose.applyInverse(meshIsA ? point.pointA : point.pointB) - a;
-    const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2), dp1 = local.dot(e1), dp2 = local.dot(e2);
-    const double denominator = d11 * d22 - d12 * d12;
-    const double v = (d22 * dp1 - d12 * dp2) / denominator, w = (d11 * dp2 - d12 * dp1) / denominator;
-    if (v >= -onFeatureTolerance && w >= -onFeatureTolerance && v + w <= 1.0 + onFeatureTolerance)
+    const Vec3 coordinates = barycentric(triangle, meshPose.applyInverse(meshIsA ? point.pointA : point.pointB));
+    if ((coordinates.array() >= -onFeatureTolerance).all())
       manifold.points[kept++] = point;
   }
   manifold.pointCount = kept;
